@@ -1,0 +1,22 @@
+# Every dependency is a Debian package. A missing one stops the configure step
+# and names the package to install (see README.md, "Quick start").
+function(stackbook_require_package name apt_package)
+  find_package(${name} ${ARGN} QUIET)
+  if(NOT ${name}_FOUND)
+    message(FATAL_ERROR
+      "stackbook needs ${name}, which was not found.\n"
+      "On Debian 12 install it with:  apt-get install ${apt_package}\n"
+      "(or run: sh .ci/install-deps.sh, which installs everything stackbook uses)")
+  endif()
+endfunction()
+
+stackbook_require_package(Eigen3 libeigen3-dev 3.4 NO_MODULE)
+stackbook_require_package(doctest doctest-dev 2.4)
+include(/usr/lib/cmake/doctest/doctest.cmake OPTIONAL RESULT_VARIABLE _doctest_cmake)
+if(NOT _doctest_cmake)
+  find_file(STACKBOOK_DOCTEST_CMAKE doctest.cmake PATHS ${doctest_DIR} NO_DEFAULT_PATH)
+  if(NOT STACKBOOK_DOCTEST_CMAKE)
+    message(FATAL_ERROR "doctest.cmake (doctest_discover_tests) not found; apt-get install doctest-dev")
+  endif()
+  include(${STACKBOOK_DOCTEST_CMAKE})
+endif()

@@ -1,0 +1,41 @@
+#pragma once
+/// \file
+/// \brief The two representations GBF keeps for every body: surface samples (the points
+/// tested for interference) and a signed distance function (inside/outside and normals).
+/// Both live in the body frame (origin at the centre of mass, principal axes).
+/// Chapter 6 implements it (analytic primitives, signed-distance grids); chapter 7 uses it.
+
+#include <string>
+#include <vector>
+
+#include "stackbook/geometry/aabb.hpp"
+
+namespace stackbook {
+
+// [shape_interface]
+template <int D>
+class Shape {
+ public:
+  virtual ~Shape() = default;
+
+  /// Signed distance phi(x) at a body-frame point: negative inside, positive outside,
+  /// |phi| the distance to the surface (exact or interpolated; see the implementation).
+  virtual double signedDistance(const Vec<D>& x) const = 0;
+
+  /// Unit outward normal N = grad(phi)/|grad(phi)| at a body-frame point. Defined
+  /// everywhere, also outside the region a grid covers (chapter 6 documents how).
+  virtual Vec<D> normal(const Vec<D>& x) const = 0;
+
+  /// Body-frame points on the surface that are tested against other bodies' phi
+  /// (the mesh vertices, possibly refined).
+  virtual const std::vector<Vec<D>>& surfaceSamples() const = 0;
+
+  /// Body-frame bounding box of the shape.
+  virtual Aabb<D> bounds() const = 0;
+
+  /// A short description for messages and summaries ("box 1 x 1 x 1", "mesh ring.obj").
+  virtual std::string describe() const = 0;
+};
+// [shape_interface]
+
+}  // namespace stackbook
