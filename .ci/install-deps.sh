@@ -2,11 +2,13 @@
 # Install the Debian 12 packages stackbook needs (as root, or through sudo).
 #   libeigen3-dev  Eigen 3.4 (linear algebra)
 #   doctest-dev    doctest 2.4.9 (tests)
+#   libtinyobjloader-dev   reading OBJ meshes
 #   doxygen, graphviz, libjs-mathjax   the course site, with math typeset offline
 set -e
 if [ "$(id -u)" -eq 0 ]; then SUDO=""; else SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
-  g++ cmake make libeigen3-dev doctest-dev doxygen graphviz libjs-mathjax >/dev/null
+  g++ cmake make libeigen3-dev doctest-dev libtinyobjloader-dev \
+  doxygen graphviz libjs-mathjax >/dev/null
 echo "stackbook: Debian packages installed."

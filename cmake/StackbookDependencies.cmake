@@ -20,3 +20,5 @@ if(NOT _doctest_cmake)
   endif()
   include(${STACKBOOK_DOCTEST_CMAKE})
 endif()
+# OBJ meshes (chapter 6): tinyobjloader built with double-precision reals.
+stackbook_require_package(tinyobjloader libtinyobjloader-dev)
