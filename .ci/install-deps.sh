@@ -3,12 +3,13 @@
 #   libeigen3-dev  Eigen 3.4 (linear algebra)
 #   doctest-dev    doctest 2.4.9 (tests)
 #   libtinyobjloader-dev   reading OBJ meshes
+#   ccache         faster rebuilds (optional; changes no result)
 #   doxygen, graphviz, libjs-mathjax   the course site, with math typeset offline
 set -e
 if [ "$(id -u)" -eq 0 ]; then SUDO=""; else SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
-  g++ cmake make libeigen3-dev doctest-dev libtinyobjloader-dev \
+  g++ cmake make ccache libeigen3-dev doctest-dev libtinyobjloader-dev \
   doxygen graphviz libjs-mathjax >/dev/null
 echo "stackbook: Debian packages installed."

@@ -2,7 +2,9 @@
 // Nothing here is called; it makes the compiler check every template in both
 // dimensions, so a 3D-only assumption cannot hide in code no 2D test reaches.
 
+#include "stackbook/body/integrate.hpp"
 #include "stackbook/body/rigid_body.hpp"
+#include "stackbook/geometry/mass_properties.hpp"
 #include "stackbook/impulse/collision_matrix.hpp"
 #include "stackbook/impulse/frictional_impulse.hpp"
 #include "stackbook/impulse/frictionless_impulse.hpp"
@@ -32,7 +34,19 @@ template struct SurfaceMesh<3>;
                                                     const Vec<D>&, double, double);          \
   template ContactImpulse<D> frictionalImpulse<D>(const Mat<D>&, const Vec<D>&,              \
                                                   const Vec<D>&, double, double,             \
-                                                  const FrictionSettings&);
+                                                  const FrictionSettings&);          \
+  template void advanceVelocity<D>(RigidBody<D>&, double, const ExternalLoads<D>&);          \
+  template void advancePosition<D>(RigidBody<D>&, double);                                   \
+  template Pose<D> predictPose<D>(const RigidBody<D>&, double);                              \
+  template Pose<D> predictPose<D>(const RigidBody<D>&, double, const ExternalLoads<D>&);    \
+  template MassProperties<D> computeMassProperties<D>(const SurfaceMesh<D>&, double,         \
+                                                      const MassPropertySettings&);          \
+  template PrincipalAxes<D> principalAxes<D>(const MassProperties<D>&,                       \
+                                             const MassPropertySettings&);                   \
+  template BodyFrame<D> moveToPrincipalFrame<D>(SurfaceMesh<D>&, double,                     \
+                                                const MassPropertySettings&);                \
+  template RigidBody<D> makeBodyFromMesh<D>(SurfaceMesh<D>&, double, const Pose<D>&,         \
+                                            const MassPropertySettings&);
 
 STACKBOOK_INSTANTIATE_IMPULSE(2)
 STACKBOOK_INSTANTIATE_IMPULSE(3)

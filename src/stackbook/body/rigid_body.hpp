@@ -64,7 +64,8 @@ struct RigidBody {
 
   // [point_velocity]
   /// Velocity of the material point at offset r from the centre of mass (world frame):
-  /// u = v + omega x r (Eq. (1.6)). The implementation notes print omega x v: an erratum.
+  /// u = v + omega x r = v + r*^T omega (Eqs. (1.6), (1.4)). The implementation notes
+  /// print omega x v: an erratum (\ref ch01_point_velocity).
   Vec<D> pointVelocity(const Vec<D>& r) const {
     return velocity + crossAngular<D>(angularVelocity, r);
   }
@@ -75,9 +76,9 @@ struct RigidBody {
   /// v += j/m, L += r x j, then omega = I_world^{-1} L. A static body is left untouched.
   void applyImpulse(const Vec<D>& r, const Vec<D>& j) {
     if (isStatic()) return;
-    velocity += inverseMass * j;
-    angularMomentum += cross<D>(r, j);
-    syncAngularVelocity();
+    velocity += inverseMass * j;        // Eq. (1.1)
+    angularMomentum += cross<D>(r, j);  // Delta L = r x j = r* j, Eq. (1.3)
+    syncAngularVelocity();              // omega' = I^{-1} L' = omega + I^{-1} r* j, Eq. (1.5)
   }
   // [apply_impulse]
 
@@ -112,6 +113,13 @@ struct RigidBody {
 /// (A + B >= C for every ordering; only in 3D).
 template <int D>
 RigidBody<D> makeDynamicBody(double mass, const AngVec<D>& principalInertia);
+
+/// The checks of makeDynamicBody, for any code that accepts mass properties (\ref ch05):
+/// throws std::invalid_argument whose message starts with `context` unless the mass is
+/// finite and positive, every principal moment is finite and positive, and (in 3D) each
+/// moment is at most the sum of the other two (A + B >= C, up to 1e-12 of the trace).
+template <int D>
+void validateMassProperties(const char* context, double mass, const AngVec<D>& principalInertia);
 
 /// A static (immovable, infinite-mass) body at the given pose.
 template <int D>

@@ -11,13 +11,17 @@ namespace stackbook {
 /// K for one body at the contact offset r (Eq. (1.8)):
 /// K = delta/m + r*^T I^{-1} r*, with I^{-1} the world-frame inverse inertia.
 /// A static body has 1/m = 0 and I^{-1} = 0, so its K is zero (Eq. (1.9)).
+/// This overload takes the mass properties directly, so a constrained body (a locked
+/// translation, a hinge; exercise 1.2 of \ref ch01) can pass its own 1/m and I^{-1}.
 template <int D>
 Mat<D> collisionMatrix(double inverseMass, const AngMat<D>& inverseInertiaWorld,
                        const Vec<D>& r) {
-  const CrossMat<D> rs = crossMatrix<D>(r);
+  const CrossMat<D> rs = crossMatrix<D>(r);  // Eq. (1.3)
+  // Eq. (1.8): the translational part delta/m plus the rotational part r*^T I^{-1} r*.
   return inverseMass * Mat<D>::Identity() + rs.transpose() * inverseInertiaWorld * rs;
 }
 
+/// K of a body at the contact offset r (world frame, from the centre of mass), Eq. (1.8).
 template <int D>
 Mat<D> collisionMatrix(const RigidBody<D>& body, const Vec<D>& r) {
   return collisionMatrix<D>(body.inverseMass, body.inverseInertiaWorld(), r);

@@ -1,0 +1,120 @@
+// Chapter 8: GBF's order against the traditional order on validation case A1 (a unit
+// box at rest on a 20 degree incline, mu = 0.5, e = 1), the A2 slide error at two step
+// sizes, and what the step costs, stage by stage. Printed as Markdown for the course page
+// (\include{doc} ch08_step_orders.out). Wall times vary from run to run; counts do not.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "stackbook/geometry/analytic_sdf.hpp"
+#include "stackbook/stepping/traditional_step.hpp"
+
+using namespace stackbook;
+
+namespace {
+
+constexpr double kG = 9.81;
+
+template <int D>
+Orientation<D> tilt(double angle) {
+  if constexpr (D == 2) {
+    return Eigen::Rotation2Dd(angle);
+  } else {
+    return Eigen::Quaterniond(Eigen::AngleAxisd(-angle, Vec3::UnitY()));
+  }
+}
+
+/// A unit box (mass 1) resting on a static 20 m x 1 m slab tilted by theta.
+template <int D>
+struct Incline {
+  World<D> world;
+  Vec<D> down, normal, start;
+
+  Incline(double theta, double mu, double e) {
+    Vec<D> up = Vec<D>::Zero();
+    up[D - 1] = 1.0;
+    Vec<D> along = Vec<D>::Zero();
+    along[0] = 1.0;
+    const Orientation<D> q = tilt<D>(theta);
+    normal = q * up;
+    down = -(q * along);
+    world.gravity = -kG * up;
+    Vec<D> slab = Vec<D>::Constant(20.0);
+    slab[D - 1] = 1.0;
+    const Material material{e, mu, 0.0};
+    world.addBody(makeStaticBody<D>(Vec<D>(-0.5 * normal), q),
+                  std::make_shared<BoxShape<D>>(makeBoxShape<D>(slab)), material);
+    RigidBody<D> box = makeDynamicBody<D>(1.0, AngVec<D>::Constant(1.0 / 6.0));
+    box.orientation = q;
+    box.position = start = 0.5 * normal;
+    world.addBody(box, std::make_shared<BoxShape<D>>(makeBoxShape<D>(Vec<D>::Constant(1.0))),
+                  material);
+  }
+  double travelled() const { return (world.bodies[1].position - start).dot(down); }
+  double lift() const { return world.bodies[1].position.dot(normal) - 0.5; }
+};
+
+template <int D>
+void orders(double seconds) {
+  for (const StepOrder order : {StepOrder::Gbf, StepOrder::Traditional}) {
+    Incline<D> scene(20.0 * M_PI / 180.0, 0.5, 1.0);
+    StepSettings settings;
+    settings.order = order;
+    double maxLift = 0.0;
+    const long steps = std::lround(seconds / settings.dt);
+    for (long n = 0; n < steps; ++n) {
+      step<D>(scene.world, settings);
+      maxLift = std::max(maxLift, std::abs(scene.lift()));
+    }
+    std::printf("| %dD | %s | %.3e | %.3e |\n", D, order == StepOrder::Gbf ? "GBF" : "traditional",
+                scene.travelled(), maxLift);
+  }
+}
+
+template <int D>
+void slideErrors() {
+  const double theta = 30.0 * M_PI / 180.0, mu = 0.3;
+  const double exact = 0.5 * kG * (std::sin(theta) - mu * std::cos(theta));
+  for (const double dt : {1e-3, 5e-4}) {
+    Incline<D> scene(theta, mu, 0.0);
+    StepSettings settings;
+    settings.dt = dt;
+    const long steps = std::lround(1.0 / dt);
+    for (long n = 0; n < steps; ++n) step<D>(scene.world, settings);
+    std::printf("| %dD | %g | %.6f | %.6f | %.3f %% |\n", D, dt, scene.travelled(), exact,
+                100.0 * (scene.travelled() - exact) / exact);
+  }
+}
+
+void costs() {
+  Incline<3> scene(20.0 * M_PI / 180.0, 0.5, 1.0);
+  StepSettings settings;
+  StepCounters total;
+  for (int n = 0; n < 1000; ++n) total += gbfStep<3>(scene.world, settings);
+  const auto row = [](const char* name, const StageCounters& c) {
+    std::printf("| %s | %lld | %lld | %lld | %lld | %lld | %lld | %lld | %.0f |\n", name,
+                static_cast<long long>(c.sweeps), static_cast<long long>(c.impulses),
+                static_cast<long long>(c.frictionless), static_cast<long long>(c.sticking),
+                static_cast<long long>(c.sliding), static_cast<long long>(c.pairIterationCapHits),
+                static_cast<long long>(c.detection.phiQueries), c.seconds * 1e3);
+  };
+  std::printf("| stage | sweeps | impulses | frictionless | sticking | sliding | pair caps hit | "
+              "phi queries | wall ms |\n|---|---|---|---|---|---|---|---|---|\n");
+  row("collision", total.collision);
+  row("contact", total.contact);
+}
+
+}  // namespace
+
+int main() {
+  std::printf("| dimension | order | travel down the slope after 1 s (m) | largest lift (m) |\n"
+              "|---|---|---|---|\n");
+  orders<2>(1.0);
+  orders<3>(1.0);
+  std::printf("\n| dimension | dt (s) | s(1 s) (m) | a/2 (m) | error |\n|---|---|---|---|---|\n");
+  slideErrors<2>();
+  slideErrors<3>();
+  std::printf("\nA1 in 3D, 1000 steps of GBF's order (unit box: 98 surface samples):\n\n");
+  costs();
+}

@@ -1,0 +1,99 @@
+#pragma once
+/// \file
+/// \brief What collision detection sees of a body: its state, its shape, the pose to test
+/// at and whether it is static; and the world bounding box of a shape at a pose (\ref ch07).
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "stackbook/body/rigid_body.hpp"
+#include "stackbook/geometry/shape.hpp"
+#include "stackbook/math/pose.hpp"
+
+namespace stackbook {
+
+// [collision_body]
+/// A read-only view of one body for collision detection (\ref ch07).
+///
+/// The pose is a value of its own because GBF tests bodies where they *will be*
+/// (a predicted pose, chapter 8) while the velocities that decide whether a sample is
+/// approaching are the body's current ones. Nothing here changes the body.
+template <int D>
+struct CollisionBody {
+  const RigidBody<D>* body = nullptr;  ///< velocities v and omega for the approach test
+  const Shape<D>* shape = nullptr;     ///< phi, N, surface samples, body-frame bounds
+  Pose<D> pose;                        ///< where the shape is tested: current or predicted
+  bool isStatic = false;               ///< two static bodies are never paired
+};
+// [collision_body]
+
+/// A collision view of `body` with `shape`, tested at `pose`. The view keeps pointers:
+/// body and shape must outlive it. `isStatic` is taken from the body (inverse mass and
+/// inverse inertia zero). \ref ch07
+template <int D>
+CollisionBody<D> collisionBodyAt(const RigidBody<D>& body, const Shape<D>& shape,
+                                 const Pose<D>& pose) {
+  return CollisionBody<D>{&body, &shape, pose, body.isStatic()};
+}
+
+/// A collision view of `body` with `shape` at the body's current pose. \ref ch07
+template <int D>
+CollisionBody<D> collisionBody(const RigidBody<D>& body, const Shape<D>& shape) {
+  return collisionBodyAt<D>(body, shape, Pose<D>{body.position, body.orientation});
+}
+
+// A view must not point at a temporary body or shape.
+template <int D>
+CollisionBody<D> collisionBodyAt(const RigidBody<D>&&, const Shape<D>&, const Pose<D>&) = delete;
+template <int D>
+CollisionBody<D> collisionBodyAt(const RigidBody<D>&, const Shape<D>&&, const Pose<D>&) = delete;
+template <int D>
+CollisionBody<D> collisionBody(const RigidBody<D>&&, const Shape<D>&) = delete;
+template <int D>
+CollisionBody<D> collisionBody(const RigidBody<D>&, const Shape<D>&&) = delete;
+
+/// Throws std::invalid_argument unless the view has a body and a shape; `caller` and
+/// `index` name the view in the message.
+template <int D>
+void checkCollisionBody(const CollisionBody<D>& view, int index, const char* caller) {
+  if (view.body != nullptr && view.shape != nullptr) return;
+  std::ostringstream msg;
+  msg << caller << ": body " << index << " has no "
+      << (view.body == nullptr ? "RigidBody (body is null)" : "Shape (shape is null)");
+  throw std::invalid_argument(msg.str());
+}
+
+// [world_bounds]
+/// World-frame bounding box of `shape` placed at `pose`: the smallest axis-aligned box
+/// around the 2^D corners of the body-frame box after p -> x + R p, computed without
+/// visiting the corners: centre x + R c, half-extent |R| h, with |R| the entrywise
+/// absolute value (Eq. (7.8)). Valid for every shape, because the body-frame box holds
+/// the whole body; it is loose when the shape does not fill its box (a sphere: up to
+/// a factor sqrt(D) on a side). An empty body-frame box stays empty. \ref ch07
+template <int D>
+Aabb<D> worldBounds(const Shape<D>& shape, const Pose<D>& pose) {
+  const Aabb<D> local = shape.bounds();
+  if (local.isEmpty()) return local;
+  const Mat<D> R = rotationMatrix<D>(pose.orientation);
+  const Vec<D> centre = pose.toWorld(local.center());
+  const Vec<D> half = R.cwiseAbs() * Vec<D>(0.5 * local.extent());  // Eq. (7.8)
+  return Aabb<D>{Vec<D>(centre - half), Vec<D>(centre + half)};
+}
+// [world_bounds]
+
+// [world_bounds_of_samples]
+/// The smallest world-frame box around the shape's surface samples at `pose`. Tight, and
+/// a bound of the body only when the body is the polytope its samples span (a mesh whose
+/// vertices are the samples). For a smooth shape sampled at a few points (a sphere whose
+/// samples are icosahedron vertices) the surface bulges between samples and out of this
+/// box: use worldBounds() there. Costs one transform per sample instead of O(1). \ref ch07
+template <int D>
+Aabb<D> worldBoundsOfSamples(const Shape<D>& shape, const Pose<D>& pose) {
+  Aabb<D> box;
+  for (const Vec<D>& s : shape.surfaceSamples()) box.extend(pose.toWorld(s));
+  return box;
+}
+// [world_bounds_of_samples]
+
+}  // namespace stackbook

@@ -1,0 +1,22 @@
+// Exercise 3.2 (stub): the sticking trial projected onto the friction cone.
+// The reference solution is chapters/solutions/ex03_2_cone_projection.cpp.
+#include "stackbook/exercises/ex03_2_cone_projection.hpp"
+
+namespace stackbook::exercises {
+
+template <int D>
+ContactImpulse<D> projectedFrictionalImpulse([[maybe_unused]] const Mat<D>& K,
+                                             [[maybe_unused]] const Vec<D>& u,
+                                             [[maybe_unused]] const Vec<D>& n,
+                                             [[maybe_unused]] double e, [[maybe_unused]] double mu) {
+  // TODO(reader): solve for the sticking trial j* (Eq. (3.2)); keep it inside the cone,
+  // otherwise keep j*_n and scale j*_t to length mu j*_n.
+  return ContactImpulse<D>{};  // no impulse
+}
+
+template ContactImpulse<2> projectedFrictionalImpulse<2>(const Mat<2>&, const Vec<2>&, const Vec<2>&,
+                                                         double, double);
+template ContactImpulse<3> projectedFrictionalImpulse<3>(const Mat<3>&, const Vec<3>&, const Vec<3>&,
+                                                         double, double);
+
+}  // namespace stackbook::exercises

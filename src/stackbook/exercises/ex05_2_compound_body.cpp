@@ -1,0 +1,17 @@
+// Exercise 5.2 (stub): mass properties of a compound body by the parallel-axis theorem.
+// The reference solution is chapters/solutions/ex05_2_compound_body.cpp.
+#include "stackbook/exercises/ex05_2_compound_body.hpp"
+
+namespace stackbook::exercises {
+
+template <int D>
+MassProperties<D> combineMassProperties([[maybe_unused]] const std::vector<CompoundPart<D>>& parts) {
+  // TODO(reader): add the masses, average the placed centres of mass, and move each part's
+  // rotated inertia R I R^T to the common centre of mass with the parallel-axis theorem.
+  return MassProperties<D>{};  // nothing
+}
+
+template MassProperties<2> combineMassProperties<2>(const std::vector<CompoundPart<2>>&);
+template MassProperties<3> combineMassProperties<3>(const std::vector<CompoundPart<3>>&);
+
+}  // namespace stackbook::exercises

@@ -1,0 +1,347 @@
+#pragma once
+/// \file
+/// \brief Checks that a `SurfaceMesh<D>` bounds a solid the way the signed-distance grid and
+/// the mass properties need (\ref ch06): indices in range, finite coordinates, no
+/// degenerate faces, closed, consistently oriented, outward. Every defect is reported with
+/// the mesh's source (a file or shape name), what is wrong and where (face, vertices).
+///
+/// What "closed and consistently oriented" means, per dimension:
+/// - 3D: every undirected edge {a, b} is used by exactly two triangles, once as (a, b) and
+///   once as (b, a). One use is a hole's rim; more than two is a non-manifold edge; two uses
+///   in the same direction mean one of the two triangles is flipped.
+/// - 2D: every vertex starts exactly one segment and ends exactly one. One use is an open
+///   end; more than two a non-manifold vertex; two starts (or two ends) a flipped segment.
+/// Self-intersections are not detected (that needs O(F^2) work or a spatial search).
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "stackbook/geometry/surface_mesh.hpp"
+
+namespace stackbook {
+
+/// The kinds of defect validateMesh reports.
+enum class MeshDefectKind {
+  Empty,                    ///< no faces
+  IndexOutOfRange,          ///< a face refers to a vertex that does not exist
+  NonFiniteVertex,          ///< a coordinate is NaN or infinite
+  DegenerateFace,           ///< zero length (2D) or area (3D), or a repeated index
+  OpenBoundary,             ///< an edge (3D) or vertex (2D) used once: a hole
+  NonManifold,              ///< an edge (3D) or vertex (2D) used more than twice
+  InconsistentOrientation,  ///< neighbours traverse a shared edge or vertex the same way
+  InwardOrientation,        ///< consistently oriented, but the enclosed volume is negative
+  UnusedVertex,             ///< a vertex no face refers to (it would be a stray sample)
+};
+
+/// A short name for a defect kind ("hole", "flipped face", ...).
+inline const char* meshDefectName(MeshDefectKind kind) {
+  switch (kind) {
+    case MeshDefectKind::Empty: return "empty mesh";
+    case MeshDefectKind::IndexOutOfRange: return "vertex index out of range";
+    case MeshDefectKind::NonFiniteVertex: return "non-finite vertex";
+    case MeshDefectKind::DegenerateFace: return "degenerate face";
+    case MeshDefectKind::OpenBoundary: return "hole (open boundary)";
+    case MeshDefectKind::NonManifold: return "non-manifold";
+    case MeshDefectKind::InconsistentOrientation: return "inconsistent orientation (flipped face)";
+    case MeshDefectKind::InwardOrientation: return "inward orientation";
+    case MeshDefectKind::UnusedVertex: return "unused vertex";
+  }
+  return "unknown defect";
+}
+
+/// One defect: its kind, where it is, and a sentence that says so.
+struct MeshDefect {
+  MeshDefectKind kind = MeshDefectKind::Empty;
+  int face = -1;              ///< the face concerned, or -1
+  std::vector<int> vertices;  ///< the vertices concerned (an edge's two ends, ...)
+  std::string message;        ///< "face 7 (vertices 3, 4, 9) has zero area"
+};
+
+/// The defects findMeshDefects found: at most settings.maxReportedPerKind of each kind are
+/// listed; `omitted` counts the others.
+struct MeshCheck {
+  std::vector<MeshDefect> defects;
+  int omitted = 0;
+  bool ok() const { return defects.empty(); }
+  bool has(MeshDefectKind kind) const {
+    return std::any_of(defects.begin(), defects.end(),
+                       [kind](const MeshDefect& d) { return d.kind == kind; });
+  }
+};
+
+/// Knobs of findMeshDefects.
+struct MeshValidationSettings {
+  /// A face counts as degenerate when its length (2D) or area (3D) is at most
+  /// degenerateTolerance x (bounding-box diagonal)^(D-1).
+  double degenerateTolerance = 1e-12;
+  /// Report vertices no face uses (they would become surface samples off the surface).
+  bool rejectUnusedVertices = true;
+  /// Report at most this many defects of each kind (the rest are counted).
+  int maxReportedPerKind = 5;
+};
+
+/// The thrown error: a std::invalid_argument whose what() lists the defects, and which
+/// keeps them for programs that want to react to a particular kind.
+class MeshError : public std::invalid_argument {
+ public:
+  MeshError(const std::string& message, std::vector<MeshDefect> defects)
+      : std::invalid_argument(message), defects_(std::move(defects)) {}
+  const std::vector<MeshDefect>& defects() const { return defects_; }
+  bool has(MeshDefectKind kind) const {
+    return std::any_of(defects_.begin(), defects_.end(),
+                       [kind](const MeshDefect& d) { return d.kind == kind; });
+  }
+
+ private:
+  std::vector<MeshDefect> defects_;
+};
+
+/// Signed volume (3D) or area (2D) enclosed by the faces, by the divergence theorem:
+/// sum over faces of a.(b x c)/6, or of (a x b)/2. Positive for an outward-oriented mesh.
+template <int D>
+double signedMeasure(const SurfaceMesh<D>& mesh) {
+  // Relative to the box centre, so that far-off meshes do not lose digits.
+  const Vec<D> origin = mesh.bounds().center();
+  double sum = 0.0;
+  for (const std::array<int, D>& face : mesh.faces) {
+    const Vec<D> a = mesh.vertices[face[0]] - origin;
+    const Vec<D> b = mesh.vertices[face[1]] - origin;
+    if constexpr (D == 3) {
+      const Vec3 c = mesh.vertices[face[2]] - origin;
+      sum += a.dot(b.cross(c)) / 6.0;
+    } else {
+      sum += 0.5 * (a.x() * b.y() - a.y() * b.x());
+    }
+  }
+  return sum;
+}
+
+namespace detail {
+
+template <int D>
+std::string listVertices(const std::array<int, D>& face) {
+  std::ostringstream out;
+  for (int k = 0; k < D; ++k) out << (k ? ", " : "") << face[k];
+  return out.str();
+}
+
+/// Collects defects, at most `limit` of each kind, counting the ones left out.
+class DefectLog {
+ public:
+  explicit DefectLog(int limit) : limit_(limit) {}
+  void add(MeshDefectKind kind, int face, std::vector<int> vertices, const std::string& message) {
+    int& n = counts_[kind];
+    ++n;
+    if (n <= limit_) defects_.push_back({kind, face, std::move(vertices), message});
+  }
+  bool any(MeshDefectKind kind) const { return counts_.count(kind) > 0; }
+  bool empty() const { return counts_.empty(); }
+  MeshCheck take() {
+    MeshCheck check;
+    check.defects = std::move(defects_);
+    for (const auto& [kind, n] : counts_) check.omitted += std::max(0, n - limit_);
+    return check;
+  }
+
+ private:
+  int limit_;
+  std::map<MeshDefectKind, int> counts_;
+  std::vector<MeshDefect> defects_;
+};
+
+}  // namespace detail
+
+// [find_mesh_defects]
+/// The defects of the mesh (at most settings.maxReportedPerKind of each kind), in the
+/// order: structure (empty, indices, finite coordinates), faces (degenerate), topology
+/// (holes, non-manifold elements, flipped faces), orientation (inward), unused vertices.
+/// Topology is checked only when the structure is sound, and orientation only when the
+/// topology is.
+template <int D>
+MeshCheck findMeshDefects(const SurfaceMesh<D>& mesh, const MeshValidationSettings& settings = {}) {
+  detail::DefectLog log(settings.maxReportedPerKind);
+  const int n = static_cast<int>(mesh.vertices.size());
+  if (mesh.faces.empty()) {
+    log.add(MeshDefectKind::Empty, -1, {}, "the mesh has no faces");
+    return log.take();
+  }
+  // Structure: indices in range, finite coordinates.
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    for (int k = 0; k < D; ++k) {
+      const int i = mesh.faces[f][k];
+      if (i < 0 || i >= n) {
+        std::ostringstream msg;
+        msg << "face " << f << " (vertices " << detail::listVertices<D>(mesh.faces[f])
+            << ") refers to vertex " << i << ", but the mesh has " << n << " vertices (0 to "
+            << n - 1 << ")";
+        log.add(MeshDefectKind::IndexOutOfRange, static_cast<int>(f), {i}, msg.str());
+      }
+    }
+  }
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (!mesh.vertices[v].allFinite()) {
+      std::ostringstream msg;
+      msg << "vertex " << v << " has a non-finite coordinate (" << mesh.vertices[v].transpose()
+          << ")";
+      log.add(MeshDefectKind::NonFiniteVertex, -1, {static_cast<int>(v)}, msg.str());
+    }
+  }
+  if (!log.empty()) return log.take();
+
+  // Faces: zero length or area, or a repeated index.
+  const double diagonal = mesh.bounds().extent().norm();
+  const double minMeasure = settings.degenerateTolerance * std::pow(diagonal, D - 1);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const std::array<int, D>& face = mesh.faces[f];
+    const Vec<D>& a = mesh.vertices[face[0]];
+    const Vec<D>& b = mesh.vertices[face[1]];
+    double measure = 0.0;
+    bool repeated = face[0] == face[1];
+    if constexpr (D == 3) {
+      const Vec3& c = mesh.vertices[face[2]];
+      measure = 0.5 * (b - a).cross(c - a).norm();
+      repeated = repeated || face[1] == face[2] || face[2] == face[0];
+    } else {
+      measure = (b - a).norm();
+    }
+    if (repeated || !(measure > minMeasure)) {
+      std::ostringstream msg;
+      msg << "face " << f << " (vertices " << detail::listVertices<D>(face) << ") ";
+      if (repeated) {
+        msg << "repeats a vertex";
+      } else {
+        msg << "has zero " << (D == 3 ? "area" : "length") << " (" << measure << " <= "
+            << minMeasure << ")";
+      }
+      log.add(MeshDefectKind::DegenerateFace, static_cast<int>(f),
+              std::vector<int>(face.begin(), face.end()), msg.str());
+    }
+  }
+
+  // Topology. The unit of adjacency is an edge (3D) or a vertex (2D); for each we count
+  // the faces that traverse it forwards (a -> b, or "start here") and backwards.
+  struct Uses {
+    std::vector<int> forward, backward;
+  };
+  std::map<std::pair<int, int>, Uses> elements;  // ordered: deterministic reports
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const std::array<int, D>& face = mesh.faces[f];
+    const int fi = static_cast<int>(f);
+    if constexpr (D == 3) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        const int a = face[k], b = face[(k + 1) % 3];
+        if (a == b) continue;
+        if (a < b) {
+          elements[{a, b}].forward.push_back(fi);
+        } else {
+          elements[{b, a}].backward.push_back(fi);
+        }
+      }
+    } else {
+      if (face[0] == face[1]) continue;
+      elements[{face[0], face[0]}].forward.push_back(fi);   // starts at face[0]
+      elements[{face[1], face[1]}].backward.push_back(fi);  // ends at face[1]
+    }
+  }
+  std::vector<int> disagreements(mesh.faces.size(), 0);  // per face: flipped neighbours
+  for (const auto& [key, uses] : elements) {
+    const std::size_t total = uses.forward.size() + uses.backward.size();
+    std::vector<int> faces = uses.forward;
+    faces.insert(faces.end(), uses.backward.begin(), uses.backward.end());
+    std::sort(faces.begin(), faces.end());
+    std::ostringstream where;
+    if constexpr (D == 3) {
+      where << "edge " << key.first << "-" << key.second;
+    } else {
+      where << "vertex " << key.first;
+    }
+    std::ostringstream faceList;
+    for (std::size_t i = 0; i < faces.size(); ++i) faceList << (i ? ", " : "") << faces[i];
+    const std::vector<int> keyVertices =
+        D == 3 ? std::vector<int>{key.first, key.second} : std::vector<int>{key.first};
+    if (total == 1) {
+      std::ostringstream msg;
+      msg << where.str() << " belongs to face " << faces[0] << " only: the mesh has a hole there";
+      log.add(MeshDefectKind::OpenBoundary, faces[0], keyVertices, msg.str());
+    } else if (total > 2) {
+      std::ostringstream msg;
+      msg << where.str() << " is shared by " << total << " faces (" << faceList.str()
+          << "): non-manifold";
+      log.add(MeshDefectKind::NonManifold, faces[0], keyVertices, msg.str());
+    } else if (uses.forward.size() != 1) {
+      for (const int f : faces) ++disagreements[f];
+    }
+  }
+  // A flipped face disagrees with (nearly) all of its neighbours; each neighbour disagrees
+  // across one edge only. Report the faces that disagree most.
+  const int worst = *std::max_element(disagreements.begin(), disagreements.end());
+  if (worst > 0) {
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+      if (disagreements[f] != worst) continue;
+      std::ostringstream msg;
+      msg << "face " << f << " (vertices " << detail::listVertices<D>(mesh.faces[f])
+          << ") is flipped: it traverses " << worst << " of its " << (D == 3 ? "edges" : "ends")
+          << " in the same direction as its neighbour";
+      log.add(MeshDefectKind::InconsistentOrientation, static_cast<int>(f),
+              std::vector<int>(mesh.faces[f].begin(), mesh.faces[f].end()), msg.str());
+    }
+  }
+
+  // Orientation: only meaningful on a closed, consistently oriented mesh.
+  const bool topologySound = !log.any(MeshDefectKind::OpenBoundary) &&
+                             !log.any(MeshDefectKind::NonManifold) &&
+                             !log.any(MeshDefectKind::InconsistentOrientation);
+  if (topologySound) {
+    const double measure = signedMeasure<D>(mesh);
+    if (!(measure > 0.0)) {
+      std::ostringstream msg;
+      msg << "the enclosed " << (D == 3 ? "volume" : "area") << " is " << measure
+          << " (not positive): every face is oriented inward; reverse them";
+      log.add(MeshDefectKind::InwardOrientation, -1, {}, msg.str());
+    }
+  }
+
+  if (settings.rejectUnusedVertices) {
+    std::vector<char> used(mesh.vertices.size(), 0);
+    for (const std::array<int, D>& face : mesh.faces) {
+      for (const int i : face) used[i] = 1;
+    }
+    for (std::size_t v = 0; v < used.size(); ++v) {
+      if (used[v]) continue;
+      std::ostringstream msg;
+      msg << "vertex " << v << " (" << mesh.vertices[v].transpose()
+          << ") is used by no face: it would be a surface sample off the surface";
+      log.add(MeshDefectKind::UnusedVertex, -1, {static_cast<int>(v)}, msg.str());
+    }
+  }
+  return log.take();
+}
+// [find_mesh_defects]
+
+/// Throws MeshError when findMeshDefects reports anything. The message starts with the
+/// source ("mesh ring.obj: 2 defects:") and lists each defect as "kind: where".
+template <int D>
+void validateMesh(const SurfaceMesh<D>& mesh, const std::string& source,
+                  const MeshValidationSettings& settings = {}) {
+  MeshCheck check = findMeshDefects<D>(mesh, settings);
+  if (check.ok()) return;
+  const std::size_t count = check.defects.size() + static_cast<std::size_t>(check.omitted);
+  std::ostringstream msg;
+  msg << source << ": invalid " << (D == 3 ? "triangle mesh" : "polygon") << " ("
+      << mesh.vertices.size() << " vertices, " << mesh.faces.size() << " faces), " << count
+      << (count == 1 ? " defect" : " defects") << ":";
+  for (const MeshDefect& d : check.defects) {
+    msg << "\n  " << meshDefectName(d.kind) << ": " << d.message;
+  }
+  if (check.omitted > 0) msg << "\n  (" << check.omitted << " more not listed)";
+  throw MeshError(msg.str(), std::move(check.defects));
+}
+
+}  // namespace stackbook

@@ -1,0 +1,334 @@
+#pragma once
+// Implementation of the signed-distance grid declared in sdf_grid.hpp (\ref ch06).
+// Instantiated for D = 2 and D = 3 in sdf_grid.cpp.
+
+#include <algorithm>
+#include <cmath>
+
+namespace stackbook {
+
+namespace detail {
+
+/// Weight of corner `mask` of a cell at local coordinates t: the product over the axes of
+/// t_k (bit k set) or 1 - t_k (bit k clear), Eq. (6.11).
+template <int D>
+double cornerWeight(unsigned mask, const Vec<D>& t) {
+  double w = 1.0;
+  for (int k = 0; k < D; ++k) w *= (mask >> k) & 1u ? t[k] : 1.0 - t[k];
+  return w;
+}
+
+inline void requireSetting(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument("SdfGridSettings: " + what);
+}
+
+}  // namespace detail
+
+template <int D>
+SdfGrid<D>::SdfGrid(const Vec<D>& origin, double cellSize, const Index& nodeCounts,
+                    std::vector<double> values, SdfGradientMethod gradient)
+    : origin_(origin), h_(cellSize), n_(nodeCounts), values_(std::move(values)),
+      gradient_(gradient) {
+  std::int64_t total = 1;
+  for (int k = 0; k < D; ++k) {
+    if (n_[k] < 2) {
+      throw std::invalid_argument("SdfGrid: every axis needs at least 2 nodes");
+    }
+    strides_[k] = total;
+    total *= n_[k];
+  }
+  if (static_cast<std::int64_t>(values_.size()) != total) {
+    throw std::invalid_argument("SdfGrid: the number of values does not match the node counts");
+  }
+  if (!(h_ > 0.0) || !std::isfinite(h_)) {
+    throw std::invalid_argument("SdfGrid: the cell size must be finite and positive");
+  }
+  Vec<D> upper;
+  for (int k = 0; k < D; ++k) upper[k] = origin_[k] + h_ * (n_[k] - 1);
+  box_ = Aabb<D>{origin_, upper};
+}
+
+template <int D>
+void SdfGrid<D>::locate(const Vec<D>& x, Index& cell, Vec<D>& t) const {
+  for (int k = 0; k < D; ++k) {
+    const std::size_t kk = static_cast<std::size_t>(k);
+    const double s = (x[k] - origin_[k]) / h_;
+    const int c = std::clamp(static_cast<int>(std::floor(s)), 0, n_[kk] - 2);
+    cell[kk] = c;
+    t[k] = std::clamp(s - c, 0.0, 1.0);
+  }
+}
+
+// [grid_interpolate]
+template <int D>
+double SdfGrid<D>::interpolate(const Vec<D>& x) const {
+  Index cell;
+  Vec<D> t;
+  locate(x, cell, t);
+  double phi = 0.0;
+  for (unsigned mask = 0; mask < (1u << D); ++mask) {  // the 2^D corners, Eq. (6.11)
+    Index corner = cell;
+    for (int k = 0; k < D; ++k) corner[k] += (mask >> k) & 1u;
+    phi += detail::cornerWeight<D>(mask, t) * nodeValue(corner);
+  }
+  return phi;
+}
+// [grid_interpolate]
+
+// [grid_value]
+template <int D>
+double SdfGrid<D>::value(const Vec<D>& x) const {
+  if (box_.contains(x)) return interpolate(x);
+  // Outside: phi(p) + |x - p| with p the nearest point of the grid box, Eq. (6.14).
+  const Vec<D> p = x.cwiseMax(box_.lower).cwiseMin(box_.upper);
+  return interpolate(p) + (x - p).norm();
+}
+// [grid_value]
+
+template <int D>
+Vec<D> SdfGrid<D>::nodeGradient(const Index& i) const {
+  const std::int64_t base = linear(i);
+  Vec<D> g;
+  for (int k = 0; k < D; ++k) {
+    // Central difference, one-sided at the grid's edge.
+    const bool first = i[k] == 0, last = i[k] == n_[k] - 1;
+    const std::int64_t lo = first ? base : base - strides_[k];
+    const std::int64_t hi = last ? base : base + strides_[k];
+    g[k] = (values_[hi] - values_[lo]) / (first || last ? h_ : 2.0 * h_);
+  }
+  return g;
+}
+
+// [grid_gradient]
+template <int D>
+Vec<D> SdfGrid<D>::gradientInside(const Vec<D>& x, SdfGradientMethod method) const {
+  Index cell;
+  Vec<D> t;
+  locate(x, cell, t);
+  Vec<D> g = Vec<D>::Zero();
+  for (unsigned mask = 0; mask < (1u << D); ++mask) {
+    Index corner = cell;
+    for (int k = 0; k < D; ++k) corner[k] += (mask >> k) & 1u;
+    if (method == SdfGradientMethod::CentralDifferences) {
+      // Node gradients by central differences, interpolated like phi: Eq. (6.13), right.
+      g += detail::cornerWeight<D>(mask, t) * nodeGradient(corner);
+    } else {
+      // d/dx_k of the interpolant: the weight's factor t_k or 1 - t_k becomes +-1/h.
+      const double phi = nodeValue(corner);
+      for (int k = 0; k < D; ++k) {
+        double w = ((mask >> k) & 1u ? 1.0 : -1.0) / h_;  // Eq. (6.13), left
+        for (int j = 0; j < D; ++j) {
+          if (j != k) w *= (mask >> j) & 1u ? t[j] : 1.0 - t[j];
+        }
+        g[k] += w * phi;
+      }
+    }
+  }
+  return g;
+}
+
+template <int D>
+Vec<D> SdfGrid<D>::gradient(const Vec<D>& x) const {
+  if (box_.contains(x)) return gradientInside(x, gradient_);
+  // Gradient of the extension phi(p(x)) + |x - p(x)|, Eq. (6.14): along a clamped axis
+  // p does not move with x, so that component of grad phi(p) drops out and the unit
+  // vector (x - p)/|x - p| takes its place.
+  const Vec<D> p = x.cwiseMax(box_.lower).cwiseMin(box_.upper);
+  Vec<D> g = gradientInside(p, gradient_);
+  const Vec<D> away = x - p;
+  for (int k = 0; k < D; ++k) {
+    if (away[k] != 0.0) g[k] = 0.0;
+  }
+  return g + away / away.norm();
+}
+
+template <int D>
+Vec<D> SdfGrid<D>::normal(const Vec<D>& x) const {
+  constexpr double kVanishing = 1e-8;  // |grad phi| is 1 away from the medial axis
+  const Vec<D> g = gradient(x);
+  const double length = g.norm();
+  if (length > kVanishing) return g / length;
+  if (box_.contains(x)) {
+    const SdfGradientMethod other = gradient_ == SdfGradientMethod::CentralDifferences
+                                        ? SdfGradientMethod::InterpolantDerivative
+                                        : SdfGradientMethod::CentralDifferences;
+    const Vec<D> g2 = gradientInside(x, other);
+    if (g2.norm() > kVanishing) return g2.normalized();
+  }
+  Vec<D> fallback = Vec<D>::Zero();
+  fallback[D - 1] = 1.0;
+  return fallback;
+}
+// [grid_gradient]
+
+template <int D>
+void sdfGridLayout(const Aabb<D>& region, const SdfGridSettings& settings, Vec<D>& origin,
+                   double& cellSize, std::array<int, D>& nodeCounts) {
+  detail::requireSetting(!region.isEmpty() && region.lower.allFinite() && region.upper.allFinite(),
+                         "the region to cover is empty or not finite");
+  detail::requireSetting(settings.paddingCells >= 1, "paddingCells must be at least 1, got " +
+                                                         std::to_string(settings.paddingCells));
+  detail::requireSetting(std::isfinite(settings.cellSize) && settings.cellSize >= 0.0,
+                         "cellSize must be finite and >= 0 (0: use cellsAcrossLargestExtent)");
+  const Vec<D> extent = region.extent();
+  const double largest = extent.maxCoeff();
+  if (settings.cellSize > 0.0) {
+    cellSize = settings.cellSize;
+  } else {
+    detail::requireSetting(settings.cellsAcrossLargestExtent >= 2,
+                           "cellsAcrossLargestExtent must be at least 2, got " +
+                               std::to_string(settings.cellsAcrossLargestExtent));
+    detail::requireSetting(largest > 0.0, "the region has zero extent");
+    cellSize = largest / settings.cellsAcrossLargestExtent;
+  }
+  std::int64_t total = 1;
+  for (int k = 0; k < D; ++k) {
+    // Whole cells covering the extent (a hair of slack so that an exact multiple is not
+    // rounded up by a last-bit error), plus the padding on both sides.
+    const double cells = std::max(1.0, std::ceil(extent[k] / cellSize - 1e-9));
+    detail::requireSetting(cells + 2.0 * settings.paddingCells < 1e8,
+                           "the grid would have more than 1e8 cells along an axis");
+    const int count = static_cast<int>(cells) + 2 * settings.paddingCells;
+    nodeCounts[k] = count + 1;
+    origin[k] = region.center()[k] - 0.5 * count * cellSize;
+    total *= count + 1;
+    detail::requireSetting(total <= settings.maxNodes,
+                           "the grid would have more than maxNodes = " +
+                               std::to_string(settings.maxNodes) + " nodes");
+  }
+}
+
+// [build_sdf_grid]
+template <int D>
+SdfGrid<D> buildSdfGrid(const SurfaceMesh<D>& mesh, const SdfGridSettings& settings,
+                        const std::string& source) {
+  if (settings.validate) validateMesh<D>(mesh, source);
+  detail::requireSetting(settings.bvhLeafSize >= 1, "bvhLeafSize must be at least 1");
+  Vec<D> origin;
+  double h = 0.0;
+  std::array<int, D> n{};
+  sdfGridLayout<D>(mesh.bounds(), settings, origin, h, n);
+  std::int64_t total = 1;
+  for (const int c : n) total *= c;
+  const auto position = [&](std::int64_t index) {
+    Vec<D> p;
+    for (int k = 0; k < D; ++k) {
+      const std::int64_t count = n[k];
+      p[k] = origin[k] + h * static_cast<double>(index % count);
+      index /= count;
+    }
+    return p;
+  };
+
+  // 1. Exact unsigned distance at every node (Eqs. (6.3)-(6.5)), nearest face first tried:
+  //    the previous node's, which is close along the fastest axis.
+  const FaceBvh<D> bvh(mesh, settings.bvhLeafSize);
+  std::vector<double> distance(total);
+  int hint = -1;
+  for (std::int64_t i = 0; i < total; ++i) {
+    const NearestFace<D> nearest = bvh.nearest(mesh, position(i), hint);
+    distance[i] = nearest.distance();
+    hint = nearest.face;
+  }
+  SdfBuildStats stats;
+  stats.nodes = total;
+  stats.faceTests = bvh.faceTests();
+
+  // 2. The sign (Eqs. (6.8)-(6.10)). A node within rounding of the surface (d <= 1e-12 h)
+  //    keeps phi = +d, about 1e-17: there w is 1/2 and the sign means nothing.
+  const double onSurface = 1e-12 * h;
+  std::vector<char> inside(total, 0);
+  const auto evaluate = [&](std::int64_t i) {
+    const double w = windingNumber<D>(mesh, position(i));
+    ++stats.windingEvaluations;
+    stats.maxWindingDeviation = std::max(stats.maxWindingDeviation, std::abs(w - std::round(w)));
+    return w > 0.5;  // Eq. (6.9)
+  };
+  if (settings.sign == SdfSignMethod::WindingNumberPerNode) {
+    for (std::int64_t i = 0; i < total; ++i) {
+      if (distance[i] > onSurface) inside[i] = evaluate(i);
+    }
+  } else {
+    // Union-find over the links i -- i + e_k with d_i + d_j > h (Eq. (6.10)): the two balls
+    // of radius d_i and d_j hold no surface point and together cover the segment between
+    // the nodes, so the segment does not cross the surface and w is the same at both ends.
+    // The margin 1e-9 h keeps rounding in d from joining nodes the surface separates.
+    std::vector<std::int64_t> parent(total);
+    std::iota(parent.begin(), parent.end(), std::int64_t{0});
+    const auto find = [&](std::int64_t i) {
+      while (parent[i] != i) {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+      }
+      return i;
+    };
+    const double joinThreshold = h * (1.0 + 1e-9);
+    std::int64_t stride = 1;
+    for (int k = 0; k < D; ++k) {
+      const std::int64_t count = n[k];
+      for (std::int64_t i = 0; i < total; ++i) {
+        if ((i / stride) % count == count - 1) continue;  // last node along axis k
+        const std::int64_t j = i + stride;
+        if (distance[i] + distance[j] <= joinThreshold) continue;
+        const std::int64_t ri = find(i), rj = find(j);
+        if (ri != rj) parent[std::max(ri, rj)] = std::min(ri, rj);
+      }
+      stride *= count;
+    }
+    // Each region's winding number is taken at its node farthest from the surface, where
+    // the sum is best conditioned.
+    std::vector<std::int64_t> representative(total, -1);
+    for (std::int64_t i = 0; i < total; ++i) {
+      const std::int64_t r = find(i);
+      std::int64_t& rep = representative[r];
+      if (rep < 0 || distance[i] > distance[rep]) rep = i;
+    }
+    std::vector<char> regionInside(total, 0);
+    for (std::int64_t r = 0; r < total; ++r) {
+      const std::int64_t rep = representative[r];
+      if (rep < 0) continue;  // not a root
+      ++stats.signRegions;
+      if (distance[rep] > onSurface) regionInside[r] = evaluate(rep);
+    }
+    for (std::int64_t i = 0; i < total; ++i) inside[i] = regionInside[find(i)];
+  }
+
+  std::vector<double> values(total);
+  for (std::int64_t i = 0; i < total; ++i) {
+    const double d = distance[i];
+    values[i] = inside[i] ? -d : d;  // Eq. (6.1)
+  }
+  SdfGrid<D> grid(origin, h, n, std::move(values), settings.gradient);
+  grid.setStats(stats);
+  return grid;
+}
+// [build_sdf_grid]
+
+template <int D>
+SdfGrid<D> sampleSdfGrid(const std::function<double(const Vec<D>&)>& phi, const Aabb<D>& region,
+                         const SdfGridSettings& settings) {
+  Vec<D> origin;
+  double h = 0.0;
+  std::array<int, D> n{};
+  sdfGridLayout<D>(region, settings, origin, h, n);
+  std::int64_t total = 1;
+  for (const int c : n) total *= c;
+  std::vector<double> values(total);
+  for (std::int64_t i = 0; i < total; ++i) {
+    std::int64_t rest = i;
+    Vec<D> p;
+    for (int k = 0; k < D; ++k) {
+      const std::int64_t count = n[k];
+      p[k] = origin[k] + h * static_cast<double>(rest % count);
+      rest /= count;
+    }
+    values[i] = phi(p);
+  }
+  SdfGrid<D> grid(origin, h, n, std::move(values), settings.gradient);
+  SdfBuildStats stats;
+  stats.nodes = total;
+  grid.setStats(stats);
+  return grid;
+}
+
+}  // namespace stackbook

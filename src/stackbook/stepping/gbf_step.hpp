@@ -1,0 +1,111 @@
+#pragma once
+/// \file
+/// \brief GBF's time step (chapter 8): (1) collisions at the predicted poses with the
+/// bodies' restitution, (2) velocity update, (3) contact with a restitution ramp ending
+/// at 0, [hook: shock propagation, chapter 9], (4) position update.
+
+#include <chrono>
+#include <functional>
+#include <sstream>
+#include <stdexcept>
+
+#include "stackbook/stepping/impulse_stage.hpp"
+
+namespace stackbook {
+
+// [post_contact_hook]
+/// Called once per step between the contact stage and the position update, with the
+/// velocities the contact stage left. Chapter 9 passes shock propagation here (contact
+/// graph and levels from src/stackbook/stacking/, then one pass freezing each level).
+/// Empty by default: chapter 8's step has no shock propagation.
+template <int D>
+using PostContactHook = std::function<void(World<D>&, const StepSettings&, StepCounters&)>;
+// [post_contact_hook]
+
+namespace detail {
+
+/// The checks every step function makes on entry.
+template <int D>
+void checkStepInput(const World<D>& world, const StepSettings& settings, const char* caller) {
+  validateStepSettings(settings, caller);
+  validateWorld<D>(world, caller);
+  for (std::size_t i = 0; i < world.materials.size(); ++i) {
+    if (world.materials[i].rollingFriction != 0.0) {
+      std::ostringstream msg;
+      msg << caller << ": body " << i
+          << ": material.rollingFriction is not supported by this step (it has no rolling "
+             "friction); set it to 0, got "
+          << world.materials[i].rollingFriction;
+      throw std::invalid_argument(msg.str());
+    }
+  }
+}
+
+inline double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace detail
+
+/// The collision stage's spec: predicted poses with loads (Eq. (8.1)), the pair's own e.
+inline StageSpec collisionStageSpec(const StepSettings& s, Lookahead lookahead) {
+  return StageSpec{lookahead, s.collisionIterations, s.collisionPairIterations,
+                   [](int, const PairMaterial& m) { return m.restitution; }};
+}
+
+/// The contact stage's spec: the ramp e_k of Eq. (8.5) for sweep k, whatever the bodies' e.
+inline StageSpec contactStageSpec(const StepSettings& s, Lookahead lookahead) {
+  return StageSpec{lookahead, s.contactIterations, s.contactPairIterations,
+                   [&s](int k, const PairMaterial&) { return s.contactRestitutionAt(k); }};
+}
+
+// [gbf_step]
+/// One step of GBF's time integration (chapter 8) in the order of the paper:
+/// 1. collision stage: detect at x' = x + dt (v + dt g) (Eq. (8.1)), impulses with the
+///    pair's restitution e and friction mu on the current velocities;
+/// 2. velocity update v += dt g (Eq. (5.7));
+/// 3. contact stage: detect at x' = x + dt v (Eq. (8.2)), sweep k with e_k (Eq. (8.5));
+/// 4. hook (shock propagation in chapter 9; nothing by default);
+/// 5. position update x += dt v, R <- exp(dt [omega]x) R (Eqs. (5.8)-(5.12)).
+/// Throws std::invalid_argument for a bad world or settings. Returns this step's counters.
+template <int D>
+StepCounters gbfStep(World<D>& world, const StepSettings& settings,
+                     const PostContactHook<D>& hook = {}) {
+  detail::checkStepInput<D>(world, settings, "gbfStep");
+  const auto start = std::chrono::steady_clock::now();
+  const double dt = settings.dt;
+  StepCounters counters;
+  counters.steps = 1;
+
+  // (1) Collisions: where the bodies would be after a free step, with their own e.
+  runImpulseStage<D>(world, collisionStageSpec(settings, Lookahead::VelocityAndLoads), dt,
+                     settings, counters.collision);
+
+  // (2) Velocity update with the forces.
+  auto t = std::chrono::steady_clock::now();
+  for (int i = 0; i < world.size(); ++i) {
+    advanceVelocity<D>(world.bodies[static_cast<std::size_t>(i)], dt, world.loads(i));  // Eq. (5.7)
+  }
+  counters.velocityUpdateSeconds += detail::secondsSince(t);
+
+  // (3) Contact: where the new velocities would carry the bodies, restitution ramp.
+  runImpulseStage<D>(world, contactStageSpec(settings, Lookahead::Velocity), dt, settings,
+                     counters.contact);
+
+  // (4) Hook for shock propagation (chapter 9).
+  if (hook) {
+    t = std::chrono::steady_clock::now();
+    hook(world, settings, counters);
+    counters.hookSeconds += detail::secondsSince(t);
+  }
+
+  // (5) Position update with the velocities contact left.
+  t = std::chrono::steady_clock::now();
+  for (RigidBody<D>& body : world.bodies) advancePosition<D>(body, dt);  // Eqs. (5.8)-(5.12)
+  counters.positionUpdateSeconds += detail::secondsSince(t);
+  counters.totalSeconds = detail::secondsSince(start);
+  return counters;
+}
+// [gbf_step]
+
+}  // namespace stackbook

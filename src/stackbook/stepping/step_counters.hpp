@@ -1,0 +1,96 @@
+#pragma once
+/// \file
+/// \brief What one time step did (chapter 8): impulses per stage and per branch, sweeps
+/// used, detection work and wall time per stage. Counters for reports and benchmarks,
+/// never conditions the step depends on.
+
+#include <cstdint>
+#include <sstream>
+#include <string>
+
+#include "stackbook/collision/detection_counters.hpp"
+#include "stackbook/impulse/contact_impulse.hpp"
+
+namespace stackbook {
+
+// [stage_counters]
+/// The work of one impulse stage (collision or contact).
+struct StageCounters {
+  std::int64_t sweeps = 0;           ///< sweeps over the pairs actually run
+  std::int64_t pairVisits = 0;       ///< (sweep, pair) visits
+  std::int64_t impulses = 0;         ///< impulses applied (all branches)
+  std::int64_t frictionless = 0;     ///< of those: normal only (mu = 0)
+  std::int64_t sticking = 0;         ///< of those: static friction
+  std::int64_t sliding = 0;          ///< of those: kinetic friction
+  std::int64_t pairIterationCapHits = 0;  ///< pair loops stopped by the cap, not by separation
+  DetectionCounters detection;       ///< broad and narrow phase work
+  double seconds = 0.0;              ///< wall time (std::chrono::steady_clock)
+
+  /// Count one applied impulse by its branch.
+  void countImpulse(ImpulseBranch branch) {
+    ++impulses;
+    if (branch == ImpulseBranch::Frictionless) ++frictionless;
+    if (branch == ImpulseBranch::Sticking) ++sticking;
+    if (branch == ImpulseBranch::Sliding) ++sliding;
+  }
+
+  StageCounters& operator+=(const StageCounters& o) {
+    sweeps += o.sweeps;
+    pairVisits += o.pairVisits;
+    impulses += o.impulses;
+    frictionless += o.frictionless;
+    sticking += o.sticking;
+    sliding += o.sliding;
+    pairIterationCapHits += o.pairIterationCapHits;
+    detection += o.detection;
+    seconds += o.seconds;
+    return *this;
+  }
+
+  /// One line, e.g. "3 sweeps, 12 impulses (0 frictionless, 10 sticking, 2 sliding), ...".
+  std::string summary() const {
+    std::ostringstream out;
+    out << sweeps << " sweeps, " << pairVisits << " pair visits, " << impulses << " impulses ("
+        << frictionless << " frictionless, " << sticking << " sticking, " << sliding
+        << " sliding), " << pairIterationCapHits << " pair caps hit, " << seconds * 1e3
+        << " ms; " << detection.summary();
+    return out.str();
+  }
+};
+// [stage_counters]
+
+// [step_counters]
+/// The work of one or more steps, stage by stage. Add steps up with +=.
+struct StepCounters {
+  std::int64_t steps = 0;
+  StageCounters collision;  ///< stage (1)
+  StageCounters contact;    ///< stage (3)
+  double velocityUpdateSeconds = 0.0;
+  double positionUpdateSeconds = 0.0;
+  double hookSeconds = 0.0;  ///< time spent in the post-contact hook (chapter 9)
+  double totalSeconds = 0.0;
+
+  StepCounters& operator+=(const StepCounters& o) {
+    steps += o.steps;
+    collision += o.collision;
+    contact += o.contact;
+    velocityUpdateSeconds += o.velocityUpdateSeconds;
+    positionUpdateSeconds += o.positionUpdateSeconds;
+    hookSeconds += o.hookSeconds;
+    totalSeconds += o.totalSeconds;
+    return *this;
+  }
+
+  /// A few lines for logs and reports.
+  std::string summary() const {
+    std::ostringstream out;
+    out << steps << " steps, " << totalSeconds * 1e3 << " ms\n  collision: " << collision.summary()
+        << "\n  contact:   " << contact.summary() << "\n  velocity update "
+        << velocityUpdateSeconds * 1e3 << " ms, position update " << positionUpdateSeconds * 1e3
+        << " ms, hook " << hookSeconds * 1e3 << " ms";
+    return out.str();
+  }
+};
+// [step_counters]
+
+}  // namespace stackbook

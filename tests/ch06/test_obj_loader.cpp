@@ -1,0 +1,110 @@
+// Chapter 6: loading OBJ files, and rejecting bad ones with the file and the defect named.
+#include <doctest/doctest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+
+#include "stackbook/geometry/mesh_primitives.hpp"
+#include "stackbook/geometry/obj_loader.hpp"
+
+using namespace stackbook;
+
+namespace {
+
+// STACKBOOK_CH06_DATA is set by tests/ch06/CMakeLists.txt to the folder of OBJ files.
+std::string dataFile(const std::string& name) { return std::string(STACKBOOK_CH06_DATA) + "/" + name; }
+
+// The message of the MeshError that loading `name` throws ("" if it loads).
+std::string loadError(const std::string& name) {
+  try {
+    loadObjMesh(dataFile(name));
+  } catch (const MeshError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+TEST_SUITE(STACKBOOK_CHAPTER) {
+
+// [test_obj_round_trip]
+TEST_CASE("a box survives the OBJ round trip bit for bit") {
+  const TriangleMesh box = boxMesh(Vec3(1.0, 0.6, 0.4), 3);
+  const std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                     ("stackbook_ch06_box_" + std::to_string(::getpid()) + ".obj");
+  saveObjMesh(box, path.string(), "box 1 x 0.6 x 0.4, 3 x 3 quads per face");
+  const TriangleMesh loaded = loadObjMesh(path.string());
+  std::filesystem::remove(path);
+  REQUIRE(loaded.vertices.size() == box.vertices.size());
+  REQUIRE(loaded.faces.size() == box.faces.size());
+  for (std::size_t i = 0; i < box.vertices.size(); ++i) CHECK(loaded.vertices[i] == box.vertices[i]);
+  for (std::size_t f = 0; f < box.faces.size(); ++f) CHECK(loaded.faces[f] == box.faces[f]);
+}
+// [test_obj_round_trip]
+
+TEST_CASE("quadrilateral faces are triangulated and repeated corners are merged") {
+  const TriangleMesh quads = loadObjMesh(dataFile("cube_quads.obj"));
+  CHECK(quads.vertices.size() == 8);
+  CHECK(quads.faces.size() == 12);
+  CHECK(signedMeasure<3>(quads) == doctest::Approx(1.0).epsilon(1e-15));
+  // Written face by face, the cube has 24 vertices; merged, it is closed with 8.
+  const TriangleMesh split = loadObjMesh(dataFile("cube_split_vertices.obj"));
+  CHECK(split.vertices.size() == 8);
+  CHECK(split.faces.size() == 12);
+  CHECK(signedMeasure<3>(split) == doctest::Approx(1.0).epsilon(1e-15));
+  // Without merging the same file is 6 separate squares: every edge is a hole.
+  ObjLoadSettings noMerge;
+  noMerge.mergeTolerance = -1.0;
+  CHECK_THROWS_WITH_AS(loadObjMesh(dataFile("cube_split_vertices.obj"), noMerge),
+                       doctest::Contains("hole"), MeshError);
+}
+
+// [test_obj_errors]
+TEST_CASE("bad OBJ files are rejected with the file and the defect named") {
+  const std::string missing = loadError("no_such_file.obj");
+  CHECK(contains(missing, "no_such_file.obj: cannot open the file: it does not exist"));
+
+  const std::string malformed = loadError("malformed_vertex.obj");
+  CHECK(contains(malformed, "malformed_vertex.obj: line 3 ('v 1 abc 0')"));
+  CHECK(contains(malformed, "coordinate 2 ('abc') is not a number"));
+
+  CHECK(contains(loadError("nan_vertex.obj"), "line 4 ('v 0 nan 0'): non-finite vertex coordinate 2"));
+  CHECK(contains(loadError("bad_index.obj"),
+                 "line 9 ('f 2 3 9'): face refers to vertex 9, but the file has 4 vertices"));
+  CHECK(contains(loadError("no_faces.obj"), "no_faces.obj: the file contains no faces"));
+
+  const std::string open = loadError("open_box.obj");
+  CHECK(contains(open, "open_box.obj: invalid triangle mesh"));
+  CHECK(contains(open, "hole (open boundary)"));
+
+  const std::string flipped = loadError("flipped_face.obj");
+  CHECK(contains(flipped, "inconsistent orientation (flipped face): face 3"));
+
+  const std::string sliver = loadError("degenerate_triangle.obj");
+  CHECK(contains(sliver, "degenerate face: face 5 (vertices 1, 2, 4) has zero area"));
+
+  CHECK(contains(loadError("inside_out.obj"), "inward orientation: the enclosed volume is -0.166667"));
+}
+// [test_obj_errors]
+
+TEST_CASE("OBJ text with a face of two vertices or a zero index is malformed") {
+  const std::string tetra = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+  CHECK_THROWS_WITH_AS(parseObjMesh(tetra + "f 1 2\n", "two.obj"),
+                       doctest::Contains("two.obj: line 5 ('f 1 2'): malformed face: 2 vertices"),
+                       MeshError);
+  CHECK_THROWS_WITH_AS(parseObjMesh(tetra + "f 1 2 0\n", "zero.obj"),
+                       doctest::Contains("'0' is not a vertex reference"), MeshError);
+  // Negative indices count back from the last vertex defined: the tetrahedron loads.
+  const TriangleMesh relative =
+      parseObjMesh(tetra + "f -4 -2 -3\nf -4 -3 -1\nf -4 -1 -2\nf -3 -2 -1\n", "relative.obj");
+  CHECK(signedMeasure<3>(relative) == doctest::Approx(1.0 / 6.0).epsilon(1e-15));
+}
+
+}  // TEST_SUITE
