@@ -33,6 +33,8 @@ enum class SdfSignMethod {
   /// Winding number at one node per sign region: nodes i, j that are grid neighbours with
   /// d_i + d_j > h cannot have the surface between them (Eq. (6.10)), so they share a sign;
   /// one winding number per connected region of such links decides the whole region.
+  /// Needs a closed mesh (only then is w constant between surface crossings); for a
+  /// damaged mesh built with validate = false, use WindingNumberPerNode.
   WindingNumberPerRegion,
   /// Winding number at every node: O(nodes x faces), the plain reference.
   WindingNumberPerNode,

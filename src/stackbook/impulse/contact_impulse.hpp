@@ -43,8 +43,8 @@ struct ContactImpulse {
   double friction = 0.0;     ///< mu used (may be lowered: Painleve guard or energy)
   bool restitutionLowered = false;   ///< sticking target lowered to stop an energy gain
   bool frictionLowered = false;      ///< kinetic mu lowered (Painleve or energy guard)
-  bool slipFromImpulse = false;      ///< u_t ~ 0: slip direction taken from the impact
-  bool singularK = false;            ///< factorisation of K failed; fell back to a normal impulse
+  bool slipFromImpulse = false;      ///< slip direction T* = -j*_t/|j*_t| from the sticking trial (u_t ~ 0, a reversed slip, the StickingImpulse rule, or the Painleve switch of Eq. (3.7))
+  bool singularK = false;            ///< K singular: no sticking trial; slid along u_t (mu kept to the Painleve margin) or applied the normal impulse
 
   /// Normal component j . n of the impulse.
   double normal(const Vec<D>& n) const { return j.dot(n); }
