@@ -60,6 +60,7 @@ TEST_CASE("The post-contact hook runs once per step after the velocity update an
   world.gravity = Vec2(0.0, -kG);
   world.addBody(unitBox<2>(), unitBoxShape<2>());
   StepSettings settings;
+  settings.effects.shockPropagation = true;  // the hook is the shock-propagation effect
   int calls = 0;
   Vec2 seen = Vec2::Zero();
   const PostContactHook<2> stop = [&](World<2>& w, const StepSettings&, StepCounters&) {
@@ -131,7 +132,7 @@ TEST_CASE("A bad world or bad settings is rejected with a message naming the bod
   }
   {
     World<2> w = make();
-    w.materials[1].rollingFriction = 0.01;
+    w.materials[1].rollingFriction = -0.01;
     CHECK_THROWS_WITH_AS(gbfStep<2>(w, good), doctest::Contains("body 1: material.rollingFriction"),
                          std::invalid_argument);
   }

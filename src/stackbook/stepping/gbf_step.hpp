@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "stackbook/stepping/effects.hpp"
 #include "stackbook/stepping/impulse_stage.hpp"
 
 namespace stackbook {
@@ -29,16 +30,6 @@ template <int D>
 void checkStepInput(const World<D>& world, const StepSettings& settings, const char* caller) {
   validateStepSettings(settings, caller);
   validateWorld<D>(world, caller);
-  for (std::size_t i = 0; i < world.materials.size(); ++i) {
-    if (world.materials[i].rollingFriction != 0.0) {
-      std::ostringstream msg;
-      msg << caller << ": body " << i
-          << ": material.rollingFriction is not supported by this step (it has no rolling "
-             "friction); set it to 0, got "
-          << world.materials[i].rollingFriction;
-      throw std::invalid_argument(msg.str());
-    }
-  }
 }
 
 inline double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -47,17 +38,29 @@ inline double secondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace detail
 
-/// The collision stage's spec: predicted poses with loads (Eq. (8.1)), the pair's own e.
-inline StageSpec collisionStageSpec(const StepSettings& s, Lookahead lookahead) {
-  return StageSpec{lookahead, s.collisionIterations, s.collisionPairIterations,
-                   [](int, const PairMaterial& m) { return m.restitution; }};
+// [stage_specs]
+/// The collision stage's spec: predicted poses (Eq. (8.1)), the pair's own e when the
+/// restitution effect runs and e = 0 (plastic) when it does not.
+inline StageSpec collisionStageSpec(const StepSettings& s, const Effects& effects,
+                                    Lookahead lookahead) {
+  StageSpec spec{lookahead, s.collisionIterations, s.collisionPairIterations,
+                 [](int, const PairMaterial& m) { return m.restitution; }};
+  if (!effects.restitution) spec.restitution = [](int, const PairMaterial&) { return 0.0; };
+  spec.friction = effects.friction;
+  spec.rollingFriction = effects.rollingFriction;
+  return spec;
 }
 
 /// The contact stage's spec: the ramp e_k of Eq. (8.5) for sweep k, whatever the bodies' e.
-inline StageSpec contactStageSpec(const StepSettings& s, Lookahead lookahead) {
-  return StageSpec{lookahead, s.contactIterations, s.contactPairIterations,
-                   [&s](int k, const PairMaterial&) { return s.contactRestitutionAt(k); }};
+inline StageSpec contactStageSpec(const StepSettings& s, const Effects& effects,
+                                  Lookahead lookahead) {
+  StageSpec spec{lookahead, s.contactIterations, s.contactPairIterations,
+                 [&s](int k, const PairMaterial&) { return s.contactRestitutionAt(k); }};
+  spec.friction = effects.friction;
+  spec.rollingFriction = effects.rollingFriction;
+  return spec;
 }
+// [stage_specs]
 
 // [gbf_step]
 /// One step of GBF's time integration (chapter 8) in the order of the paper:
@@ -66,6 +69,8 @@ inline StageSpec contactStageSpec(const StepSettings& s, Lookahead lookahead) {
 /// 2. velocity update v += dt g (Eq. (5.7));
 /// 3. contact stage: detect at x' = x + dt v (Eq. (8.2)), sweep k with e_k (Eq. (8.5));
 /// 4. hook (shock propagation in chapter 9; nothing by default);
+/// Each stage runs only if its effect does (resolveEffects() of the scene and
+/// settings.effects); counters.effects records what ran.
 /// 5. position update x += dt v, R <- exp(dt [omega]x) R (Eqs. (5.8)-(5.12)).
 /// Throws std::invalid_argument for a bad world or settings. Returns this step's counters.
 template <int D>
@@ -76,24 +81,34 @@ StepCounters gbfStep(World<D>& world, const StepSettings& settings,
   const double dt = settings.dt;
   StepCounters counters;
   counters.steps = 1;
+  Effects effects = resolveEffects<D>(world, settings.effects);
+  effects.shockPropagation = effects.shockPropagation && static_cast<bool>(hook);
 
   // (1) Collisions: where the bodies would be after a free step, with their own e.
-  runImpulseStage<D>(world, collisionStageSpec(settings, Lookahead::VelocityAndLoads), dt,
-                     settings, counters.collision);
+  if (effects.collision) {
+    const Lookahead lookahead = effects.gravity ? Lookahead::VelocityAndLoads : Lookahead::Velocity;
+    runImpulseStage<D>(world, collisionStageSpec(settings, effects, lookahead), dt, settings,
+                       counters.collision);
+  }
 
   // (2) Velocity update with the forces.
   auto t = std::chrono::steady_clock::now();
-  for (int i = 0; i < world.size(); ++i) {
-    advanceVelocity<D>(world.bodies[static_cast<std::size_t>(i)], dt, world.loads(i));  // Eq. (5.7)
+  if (effects.gravity) {
+    for (int i = 0; i < world.size(); ++i) {
+      advanceVelocity<D>(world.bodies[static_cast<std::size_t>(i)], dt, world.loads(i));  // Eq. (5.7)
+    }
   }
   counters.velocityUpdateSeconds += detail::secondsSince(t);
 
   // (3) Contact: where the new velocities would carry the bodies, restitution ramp.
-  runImpulseStage<D>(world, contactStageSpec(settings, Lookahead::Velocity), dt, settings,
-                     counters.contact);
+  if (effects.contact) {
+    runImpulseStage<D>(world, contactStageSpec(settings, effects, Lookahead::Velocity), dt,
+                       settings, counters.contact);
+  }
 
-  // (4) Hook for shock propagation (chapter 9).
-  if (hook) {
+  // (4) Hook for shock propagation (chapter 9), if that effect runs.
+  counters.effects = effects;
+  if (effects.shockPropagation) {
     t = std::chrono::steady_clock::now();
     hook(world, settings, counters);
     counters.hookSeconds += detail::secondsSince(t);

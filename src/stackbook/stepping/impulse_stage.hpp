@@ -56,6 +56,12 @@ struct StageSpec {
   /// Restitution for sweep k (1-based) of the pair: the pair's own e in the collision
   /// stage, the ramp e_k in the contact stage.
   std::function<double(int sweep, const PairMaterial&)> restitution;
+  /// The friction effect: on, the frictional impulse of chapter 3 with the pair's mu; off,
+  /// the frictionless impulse of chapter 2 (what chapter 3 returns for mu = 0, bit for bit).
+  bool friction = true;
+  /// The rolling-friction effect (Eq. (8.7)): after a sticking impulse, damp the relative
+  /// rolling and spinning by the pair's rolling coefficient.
+  bool rollingFriction = false;
 };
 // [stage_spec]
 
@@ -92,11 +98,17 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
     const Vec<D> u = relativeVelocity<D>(owner, rOwner, other, rOther);     // Eq. (8.3)
     const PairMaterial material = world.pairMaterial(s.owner, s.other);     // Eq. (8.4)
     const double e = spec.restitution(sweep, material);
-    const ContactImpulse<D> impulse =
-        frictionalImpulse<D>(K, u, s.normal, e, material.friction, settings.friction);
+    ContactImpulse<D> impulse;
+    if (spec.friction) {
+      ++counters.frictionEvaluations;
+      impulse = frictionalImpulse<D>(K, u, s.normal, e, material.friction, settings.friction);
+    } else {
+      impulse = frictionlessImpulse<D>(K, u, s.normal, e, settings.friction.pivotTolerance);
+    }
     if (impulse.j.isZero(0.0)) return applied;  // immovable or no response: nothing to iterate
     applyPairImpulse<D>(owner, rOwner, other, rOther, impulse.j);  // +j owner, -j other
     counters.countImpulse(impulse.branch);
+    if (impulse.restitution > 0.0) ++counters.elasticImpulses;
     ++applied;
     views[static_cast<std::size_t>(s.owner)].pose = testedPose<D>(world, s.owner, spec.lookahead, dt);
     views[static_cast<std::size_t>(s.other)].pose = testedPose<D>(world, s.other, spec.lookahead, dt);
@@ -105,6 +117,39 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
   return applied;
 }
 // [pair_impulse]
+
+// [stage_views]
+/// The collision view of every body at its tested pose under `lookahead`.
+template <int D>
+std::vector<CollisionBody<D>> stageViews(const World<D>& world, Lookahead lookahead, double dt) {
+  std::vector<CollisionBody<D>> views;
+  views.reserve(world.bodies.size());
+  for (int i = 0; i < world.size(); ++i) {
+    const std::size_t k = static_cast<std::size_t>(i);
+    views.push_back(collisionBodyAt<D>(world.bodies[k], *world.shapes[k],
+                                       testedPose<D>(world, i, lookahead, dt)));
+  }
+  return views;
+}
+// [stage_views]
+
+// [sweep_pairs]
+/// One sweep over a given list of pairs: resolvePair() on each, in list order. Returns
+/// the number of impulses applied. Chapter 9's shock propagation sweeps each level's
+/// pairs with this, the stages below sweep the broad phase's pairs.
+template <int D>
+int sweepPairs(World<D>& world, std::vector<CollisionBody<D>>& views,
+               const std::vector<BodyPair>& pairs, const StageSpec& spec, int sweep, double dt,
+               const StepSettings& settings, StageCounters& counters) {
+  ++counters.sweeps;
+  int applied = 0;
+  for (const BodyPair& pair : pairs) {
+    ++counters.pairVisits;
+    applied += resolvePair<D>(world, views, pair, spec, sweep, dt, settings, counters);
+  }
+  return applied;
+}
+// [sweep_pairs]
 
 // [impulse_stage]
 /// One stage: up to spec.sweeps sweeps; each sweep finds the overlapping pairs at the
@@ -115,24 +160,11 @@ template <int D>
 void runImpulseStage(World<D>& world, const StageSpec& spec, double dt,
                      const StepSettings& settings, StageCounters& counters) {
   const auto start = std::chrono::steady_clock::now();
-  const int n = world.size();
-  std::vector<CollisionBody<D>> views;
-  views.reserve(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    const std::size_t k = static_cast<std::size_t>(i);
-    views.push_back(collisionBodyAt<D>(world.bodies[k], *world.shapes[k],
-                                       testedPose<D>(world, i, spec.lookahead, dt)));
-  }
+  std::vector<CollisionBody<D>> views = stageViews<D>(world, spec.lookahead, dt);
   for (int sweep = 1; sweep <= spec.sweeps; ++sweep) {
-    ++counters.sweeps;
-    int applied = 0;
     const std::vector<BodyPair> pairs =
         sweepAndPrune<D>(views, settings.detection.broad, &counters.detection);
-    for (const BodyPair& pair : pairs) {
-      ++counters.pairVisits;
-      applied += resolvePair<D>(world, views, pair, spec, sweep, dt, settings, counters);
-    }
-    if (applied == 0) break;
+    if (sweepPairs<D>(world, views, pairs, spec, sweep, dt, settings, counters) == 0) break;
   }
   counters.seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

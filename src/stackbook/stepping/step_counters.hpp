@@ -10,6 +10,7 @@
 
 #include "stackbook/collision/detection_counters.hpp"
 #include "stackbook/impulse/contact_impulse.hpp"
+#include "stackbook/stepping/effects.hpp"
 
 namespace stackbook {
 
@@ -23,6 +24,9 @@ struct StageCounters {
   std::int64_t sticking = 0;         ///< of those: static friction
   std::int64_t sliding = 0;          ///< of those: kinetic friction
   std::int64_t pairIterationCapHits = 0;  ///< pair loops stopped by the cap, not by separation
+  std::int64_t frictionEvaluations = 0;   ///< calls of the frictional impulse (friction effect on)
+  std::int64_t elasticImpulses = 0;       ///< impulses applied with e > 0 (restitution effect on)
+  std::int64_t rollingImpulses = 0;       ///< rolling/spinning friction impulses applied
   DetectionCounters detection;       ///< broad and narrow phase work
   double seconds = 0.0;              ///< wall time (std::chrono::steady_clock)
 
@@ -42,6 +46,9 @@ struct StageCounters {
     sticking += o.sticking;
     sliding += o.sliding;
     pairIterationCapHits += o.pairIterationCapHits;
+    frictionEvaluations += o.frictionEvaluations;
+    elasticImpulses += o.elasticImpulses;
+    rollingImpulses += o.rollingImpulses;
     detection += o.detection;
     seconds += o.seconds;
     return *this;
@@ -52,7 +59,9 @@ struct StageCounters {
     std::ostringstream out;
     out << sweeps << " sweeps, " << pairVisits << " pair visits, " << impulses << " impulses ("
         << frictionless << " frictionless, " << sticking << " sticking, " << sliding
-        << " sliding), " << pairIterationCapHits << " pair caps hit, " << seconds * 1e3
+        << " sliding, " << elasticImpulses << " elastic, " << rollingImpulses << " rolling), "
+        << frictionEvaluations << " friction evaluations, " << pairIterationCapHits
+        << " pair caps hit, " << seconds * 1e3
         << " ms; " << detection.summary();
     return out.str();
   }
@@ -65,6 +74,9 @@ struct StepCounters {
   std::int64_t steps = 0;
   StageCounters collision;  ///< stage (1)
   StageCounters contact;    ///< stage (3)
+  StageCounters shock;      ///< shock propagation (chapter 9), summed over levels
+  /// The effects this step ran (for several steps: those of the last one added).
+  Effects effects;
   double velocityUpdateSeconds = 0.0;
   double positionUpdateSeconds = 0.0;
   double hookSeconds = 0.0;  ///< time spent in the post-contact hook (chapter 9)
@@ -74,6 +86,8 @@ struct StepCounters {
     steps += o.steps;
     collision += o.collision;
     contact += o.contact;
+    shock += o.shock;
+    effects = o.effects;
     velocityUpdateSeconds += o.velocityUpdateSeconds;
     positionUpdateSeconds += o.positionUpdateSeconds;
     hookSeconds += o.hookSeconds;
@@ -84,8 +98,9 @@ struct StepCounters {
   /// A few lines for logs and reports.
   std::string summary() const {
     std::ostringstream out;
-    out << steps << " steps, " << totalSeconds * 1e3 << " ms\n  collision: " << collision.summary()
-        << "\n  contact:   " << contact.summary() << "\n  velocity update "
+    out << steps << " steps, " << totalSeconds * 1e3 << " ms; effects: " << effects.summary()
+        << "\n  collision: " << collision.summary() << "\n  contact:   " << contact.summary()
+        << "\n  shock:     " << shock.summary() << "\n  velocity update "
         << velocityUpdateSeconds * 1e3 << " ms, position update " << positionUpdateSeconds * 1e3
         << " ms, hook " << hookSeconds * 1e3 << " ms";
     return out.str();

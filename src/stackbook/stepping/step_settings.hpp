@@ -11,6 +11,7 @@
 
 #include "stackbook/collision/narrow_phase.hpp"
 #include "stackbook/impulse/friction_settings.hpp"
+#include "stackbook/stepping/effects.hpp"
 
 namespace stackbook {
 
@@ -38,6 +39,30 @@ inline FrictionSettings gbfFrictionSettings() {
   return f;
 }
 // [gbf_friction]
+
+// [shock_settings]
+/// The knobs of chapter 9's shock-propagation pass (PhysBAM's defaults): each level of the
+/// contact graph is swept `sweepsPerLevel` times with at most `pairIterations` impulses per
+/// pair per sweep, sweep l with restitution e_l = -1 + l / sweepsPerLevel (-0.5, 0 for two
+/// sweeps) unless `restitution` lists them, then frozen for the levels above.
+struct ShockSettings {
+  /// Passes over all levels per step (>= 1; GBF: 1).
+  int passes = 1;
+  /// Sweeps of each level before it is frozen (>= 1; GBF/PhysBAM: 2; chapter 9 explains
+  /// why one sweep in a fixed order turns tall stacks).
+  int sweepsPerLevel = 2;
+  /// Impulses per pair per level sweep, at most (>= 1; PhysBAM: 10).
+  int pairIterations = 10;
+  /// Restitution of level sweep l = 1..sweepsPerLevel; empty means e_l = -1 + l / sweepsPerLevel.
+  std::vector<double> restitution;
+
+  /// The restitution of level sweep l (1-based).
+  double restitutionAt(int l) const {
+    if (!restitution.empty()) return restitution.at(static_cast<std::size_t>(l - 1));
+    return -1.0 + static_cast<double>(l) / static_cast<double>(sweepsPerLevel);
+  }
+};
+// [shock_settings]
 
 // [step_settings]
 /// The settings of one time step. Defaults are GBF's loop counts as PhysBAM and
@@ -67,6 +92,10 @@ struct StepSettings {
   DetectionSettings detection;
   /// GBF's order or the traditional one.
   StepOrder order = StepOrder::Gbf;
+  /// Overrides of the effects inferred from the scene (effects.hpp); empty: infer all.
+  EffectOverrides effects;
+  /// Shock propagation (chapter 9); used only when that effect runs.
+  ShockSettings shock;
 
   /// The restitution of contact sweep k (1-based), Eq. (8.5).
   double contactRestitutionAt(int k) const {
@@ -93,8 +122,24 @@ inline void validateStepSettings(const StepSettings& s, const char* caller = "va
              s.contactRestitution.size() != static_cast<std::size_t>(s.contactIterations)) {
     msg << "contactRestitution must be empty (GBF ramp) or hold contactIterations = "
         << s.contactIterations << " values, got " << s.contactRestitution.size();
+  } else if (s.shock.passes < 1) {
+    msg << "shock.passes must be >= 1, got " << s.shock.passes;
+  } else if (s.shock.sweepsPerLevel < 1) {
+    msg << "shock.sweepsPerLevel must be >= 1, got " << s.shock.sweepsPerLevel;
+  } else if (s.shock.pairIterations < 1) {
+    msg << "shock.pairIterations must be >= 1, got " << s.shock.pairIterations;
+  } else if (!s.shock.restitution.empty() &&
+             s.shock.restitution.size() != static_cast<std::size_t>(s.shock.sweepsPerLevel)) {
+    msg << "shock.restitution must be empty or hold sweepsPerLevel = " << s.shock.sweepsPerLevel
+        << " values, got " << s.shock.restitution.size();
   } else {
-    for (std::size_t k = 0; k < s.contactRestitution.size(); ++k) {
+    for (std::size_t k = 0; k < s.shock.restitution.size(); ++k) {
+      if (!(s.shock.restitution[k] >= -1.0 && s.shock.restitution[k] <= 0.0)) {
+        msg << "shock.restitution[" << k << "] must be in [-1, 0], got " << s.shock.restitution[k];
+        break;
+      }
+    }
+    for (std::size_t k = 0; msg.str().empty() && k < s.contactRestitution.size(); ++k) {
       if (!(s.contactRestitution[k] >= -1.0 && s.contactRestitution[k] <= 0.0)) {
         msg << "contactRestitution[" << k << "] must be in [-1, 0], got " << s.contactRestitution[k];
         break;

@@ -28,21 +28,30 @@ StepCounters traditionalStep(World<D>& world, const StepSettings& settings,
   const double dt = settings.dt;
   StepCounters counters;
   counters.steps = 1;
+  Effects effects = resolveEffects<D>(world, settings.effects);
+  effects.shockPropagation = effects.shockPropagation && static_cast<bool>(hook);
+  counters.effects = effects;
 
   auto t = std::chrono::steady_clock::now();
-  for (int i = 0; i < world.size(); ++i) {
-    advanceVelocity<D>(world.bodies[static_cast<std::size_t>(i)], dt, world.loads(i));  // Eq. (5.7)
+  if (effects.gravity) {
+    for (int i = 0; i < world.size(); ++i) {
+      advanceVelocity<D>(world.bodies[static_cast<std::size_t>(i)], dt, world.loads(i));  // Eq. (5.7)
+    }
   }
   counters.velocityUpdateSeconds += detail::secondsSince(t);
   t = std::chrono::steady_clock::now();
   for (RigidBody<D>& body : world.bodies) advancePosition<D>(body, dt);  // Eqs. (5.8)-(5.12)
   counters.positionUpdateSeconds += detail::secondsSince(t);
 
-  runImpulseStage<D>(world, collisionStageSpec(settings, Lookahead::Current), dt, settings,
-                     counters.collision);
-  runImpulseStage<D>(world, contactStageSpec(settings, Lookahead::Current), dt, settings,
-                     counters.contact);
-  if (hook) {
+  if (effects.collision) {
+    runImpulseStage<D>(world, collisionStageSpec(settings, effects, Lookahead::Current), dt,
+                       settings, counters.collision);
+  }
+  if (effects.contact) {
+    runImpulseStage<D>(world, contactStageSpec(settings, effects, Lookahead::Current), dt,
+                       settings, counters.contact);
+  }
+  if (effects.shockPropagation) {
     t = std::chrono::steady_clock::now();
     hook(world, settings, counters);
     counters.hookSeconds += detail::secondsSince(t);

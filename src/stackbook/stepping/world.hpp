@@ -40,15 +40,18 @@ struct Material {
 struct PairMaterial {
   double restitution = 0.0;  ///< e of the pair
   double friction = 0.0;     ///< mu of the pair
+  double rollingFriction = 0.0;  ///< rolling coefficient of the pair (a length)
 };
 
-/// The pair rule: e = min(e_1, e_2) and mu = min(mu_1, mu_2). The less elastic and the
+/// The pair rule: e = min(e_1, e_2), mu = min(mu_1, mu_2), and likewise for the rolling
+/// coefficient (Eq. (8.4)). The less elastic and the
 /// less rough surface decides, which is PhysBAM's rule for e. It is symmetric, keeps
 /// e in [0, 1], and a frictionless (mu = 0) or perfectly plastic (e = 0) surface stays so
 /// whatever it touches. Other rules (geometric mean for mu, as several engines use) are
 /// equally defensible; what matters is that the rule is symmetric and stated.
 inline PairMaterial combineMaterials(const Material& a, const Material& b) {
-  return PairMaterial{std::min(a.restitution, b.restitution), std::min(a.friction, b.friction)};
+  return PairMaterial{std::min(a.restitution, b.restitution), std::min(a.friction, b.friction),
+                      std::min(a.rollingFriction, b.rollingFriction)};  // Eq. (8.4)
 }
 // [pair_material]
 
