@@ -4,6 +4,8 @@
 #   doctest-dev    doctest 2.4.9 (tests)
 #   libtinyobjloader-dev   reading OBJ meshes
 #   ccache         faster rebuilds (optional; changes no result)
+#   nlohmann-json3-dev, libcli11-dev, libtinygltf-dev, libjs-three   the simulator: scene
+#       files (JSON), the command line, animated glTF output and its offline viewer page
 #   doxygen, graphviz, libjs-mathjax   the course site, with math typeset offline
 set -e
 if [ "$(id -u)" -eq 0 ]; then SUDO=""; else SUDO="sudo"; fi
@@ -11,5 +13,6 @@ export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
   g++ cmake make ccache libeigen3-dev doctest-dev libtinyobjloader-dev \
+  nlohmann-json3-dev libcli11-dev libtinygltf-dev libjs-three \
   doxygen graphviz libjs-mathjax >/dev/null
 echo "stackbook: Debian packages installed."

@@ -1,4 +1,4 @@
-# stackbook_add_chapter(chNN SOURCES <test files> [EXERCISES <names>])
+# stackbook_add_chapter(chNN SOURCES <test files> [EXERCISES <names>] [LIBRARIES <targets>])
 # called from tests/chNN/CMakeLists.txt; SOURCES are relative to that folder.
 #
 # Builds test_chNN from the chapter's test files and registers every test case with
@@ -18,10 +18,10 @@ if(NOT TARGET stackbook_exercises)
 endif()
 
 function(stackbook_add_chapter chapter)
-  cmake_parse_arguments(ARG "" "" "SOURCES;EXERCISES" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SOURCES;EXERCISES;LIBRARIES" ${ARGN})
   set(target test_${chapter})
   add_executable(${target} ${ARG_SOURCES} $<TARGET_OBJECTS:stackbook_test_main>)
-  target_link_libraries(${target} PRIVATE stackbook stackbook_options doctest::doctest)
+  target_link_libraries(${target} PRIVATE stackbook ${ARG_LIBRARIES} stackbook_options doctest::doctest)
   target_include_directories(${target} PRIVATE ${PROJECT_SOURCE_DIR}/tests)
   target_compile_definitions(${target} PRIVATE STACKBOOK_CHAPTER="${chapter}")
   doctest_discover_tests(${target} TEST_PREFIX "${chapter}/" ADD_LABELS 1)
@@ -37,7 +37,8 @@ function(stackbook_add_chapter chapter)
         target_sources(${exercise_target} PRIVATE ${PROJECT_SOURCE_DIR}/src/stackbook/exercises/${exercise}.cpp)
       endif()
     endforeach()
-    target_link_libraries(${exercise_target} PRIVATE stackbook stackbook_options doctest::doctest)
+    target_link_libraries(${exercise_target} PRIVATE stackbook ${ARG_LIBRARIES} stackbook_options
+                          doctest::doctest)
     target_include_directories(${exercise_target} PRIVATE ${PROJECT_SOURCE_DIR}/tests)
     target_compile_definitions(${exercise_target} PRIVATE STACKBOOK_CHAPTER="${chapter}")
     add_dependencies(stackbook_exercises ${exercise_target})

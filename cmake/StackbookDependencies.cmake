@@ -22,3 +22,13 @@ if(NOT _doctest_cmake)
 endif()
 # OBJ meshes (chapter 6): tinyobjloader built with double-precision reals.
 stackbook_require_package(tinyobjloader libtinyobjloader-dev)
+# The simulator (chapter 10): scene files in JSON, the command line, glTF output.
+stackbook_require_package(nlohmann_json nlohmann-json3-dev 3.10)
+stackbook_require_package(CLI11 libcli11-dev)
+stackbook_require_package(TinyGLTF libtinygltf-dev)
+# three.js for the offline 3D viewer page (copied next to the viewer; not a build input).
+find_path(STACKBOOK_THREE_DIR three.min.js PATHS /usr/share/javascript/three NO_DEFAULT_PATH)
+if(NOT STACKBOOK_THREE_DIR)
+  message(FATAL_ERROR "stackbook needs three.js for its 3D viewer page.\n"
+                      "On Debian 12 install it with:  apt-get install libjs-three")
+endif()
