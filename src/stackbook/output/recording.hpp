@@ -1,0 +1,74 @@
+#pragma once
+/// \file
+/// \brief A recorded run (chapter 10): what each body looks like, and where it is at each
+/// recorded frame. Every output (CSV, animated SVG, animated glTF, viewer page) is written
+/// from a Recording, so the simulator records once and the writers never see the World.
+
+#include <array>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "stackbook/geometry/surface_mesh.hpp"
+#include "stackbook/body/integrate.hpp"
+#include "stackbook/math/pose.hpp"
+#include "stackbook/stepping/world.hpp"
+
+namespace stackbook {
+
+// [body_visual]
+/// How one body is drawn: its name, its surface in the body frame (segments in 2D,
+/// triangles in 3D) and an sRGB colour. The scene builder makes it from the shape's
+/// description (chapter 10), since an SDF alone has no surface to draw.
+template <int D>
+struct BodyVisual {
+  std::string name;
+  SurfaceMesh<D> mesh;
+  bool isStatic = false;
+  std::array<double, 3> color{0.55, 0.6, 0.7};  ///< sRGB in [0, 1]
+};
+// [body_visual]
+
+// [recording]
+/// Frames of a run: times[f] and poses[f][i] for body i. Static bodies are recorded
+/// like the others (they may be placed anywhere; they simply do not move).
+template <int D>
+class Recording {
+ public:
+  explicit Recording(std::vector<BodyVisual<D>> visuals) : visuals_(std::move(visuals)) {}
+
+  /// Append a frame at time t with every body's pose; the world must have one body per
+  /// visual, and t must not go back in time.
+  void record(double t, const World<D>& world) {
+    if (world.bodies.size() != visuals_.size()) {
+      throw std::invalid_argument("Recording::record: the world has " +
+                                  std::to_string(world.bodies.size()) + " bodies but the recording " +
+                                  std::to_string(visuals_.size()) + " visuals");
+    }
+    if (!times_.empty() && t < times_.back()) {
+      throw std::invalid_argument("Recording::record: time went back");
+    }
+    std::vector<Pose<D>> frame;
+    frame.reserve(world.bodies.size());
+    for (const RigidBody<D>& body : world.bodies) frame.push_back(poseOf<D>(body));
+    times_.push_back(t);
+    poses_.push_back(std::move(frame));
+  }
+
+  const std::vector<BodyVisual<D>>& visuals() const { return visuals_; }
+  const std::vector<double>& times() const { return times_; }
+  /// poses()[f][i]: body i at frame f.
+  const std::vector<std::vector<Pose<D>>>& poses() const { return poses_; }
+  std::size_t frameCount() const { return times_.size(); }
+  std::size_t bodyCount() const { return visuals_.size(); }
+
+ private:
+  std::vector<BodyVisual<D>> visuals_;
+  std::vector<double> times_;
+  std::vector<std::vector<Pose<D>>> poses_;
+};
+// [recording]
+
+}  // namespace stackbook
