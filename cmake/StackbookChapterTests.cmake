@@ -13,8 +13,13 @@
 # compile); STACKBOOK_EXERCISE_SOLUTIONS=ON links the solutions instead of the stubs, and
 # STACKBOOK_EXERCISES=ON registers "chNN/exercises" (labels: exercise, chNN) that runs them.
 # The target stackbook_exercises builds every chapter's exercise binary (and nothing else).
+# STACKBOOK_SOLUTIONS=ON (the main preset) also builds test_chNN_solutions from the same
+# compiled exercises.cpp with the solutions linked, registered as "chNN/solutions" (labels
+# solutions, chNN); the target stackbook_solutions builds them all. CI's solutions check
+# then reuses the main build instead of compiling the library a second time.
 if(NOT TARGET stackbook_exercises)
   add_custom_target(stackbook_exercises)
+  add_custom_target(stackbook_solutions)
 endif()
 
 function(stackbook_add_chapter chapter)
@@ -27,16 +32,28 @@ function(stackbook_add_chapter chapter)
   doctest_discover_tests(${target} TEST_PREFIX "${chapter}/" ADD_LABELS 1)
 
   if(ARG_EXERCISES)
-    set(exercise_target test_${chapter}_exercises)
-    add_executable(${exercise_target} ${CMAKE_CURRENT_SOURCE_DIR}/exercises.cpp
-                   $<TARGET_OBJECTS:stackbook_test_main>)
+    # exercises.cpp is compiled once and linked twice: with the stubs and the solutions.
+    set(exercise_objects ${chapter}_exercise_tests)
+    add_library(${exercise_objects} OBJECT ${CMAKE_CURRENT_SOURCE_DIR}/exercises.cpp)
+    target_link_libraries(${exercise_objects} PRIVATE stackbook ${ARG_LIBRARIES} stackbook_options
+                          doctest::doctest)
+    target_include_directories(${exercise_objects} PRIVATE ${PROJECT_SOURCE_DIR}/tests)
+    target_compile_definitions(${exercise_objects} PRIVATE STACKBOOK_CHAPTER="${chapter}")
+    set(stub_sources "")
+    set(solution_sources "")
     foreach(exercise IN LISTS ARG_EXERCISES)
-      if(STACKBOOK_EXERCISE_SOLUTIONS)
-        target_sources(${exercise_target} PRIVATE ${PROJECT_SOURCE_DIR}/chapters/solutions/${exercise}.cpp)
-      else()
-        target_sources(${exercise_target} PRIVATE ${PROJECT_SOURCE_DIR}/src/stackbook/exercises/${exercise}.cpp)
-      endif()
+      list(APPEND stub_sources ${PROJECT_SOURCE_DIR}/src/stackbook/exercises/${exercise}.cpp)
+      list(APPEND solution_sources ${PROJECT_SOURCE_DIR}/chapters/solutions/${exercise}.cpp)
     endforeach()
+
+    set(exercise_target test_${chapter}_exercises)
+    if(STACKBOOK_EXERCISE_SOLUTIONS)
+      set(linked_sources ${solution_sources})
+    else()
+      set(linked_sources ${stub_sources})
+    endif()
+    add_executable(${exercise_target} ${linked_sources} $<TARGET_OBJECTS:${exercise_objects}>
+                   $<TARGET_OBJECTS:stackbook_test_main>)
     target_link_libraries(${exercise_target} PRIVATE stackbook ${ARG_LIBRARIES} stackbook_options
                           doctest::doctest)
     target_include_directories(${exercise_target} PRIVATE ${PROJECT_SOURCE_DIR}/tests)
@@ -47,6 +64,20 @@ function(stackbook_add_chapter chapter)
       add_test(NAME ${chapter}/exercises
                COMMAND ${exercise_target} --no-skip --test-suite=${chapter}_exercises)
       set_tests_properties(${chapter}/exercises PROPERTIES LABELS "exercise;${chapter}")
+    endif()
+
+    if(STACKBOOK_SOLUTIONS)
+      set(solution_target test_${chapter}_solutions)
+      add_executable(${solution_target} ${solution_sources} $<TARGET_OBJECTS:${exercise_objects}>
+                     $<TARGET_OBJECTS:stackbook_test_main>)
+      target_link_libraries(${solution_target} PRIVATE stackbook ${ARG_LIBRARIES} stackbook_options
+                            doctest::doctest)
+      target_include_directories(${solution_target} PRIVATE ${PROJECT_SOURCE_DIR}/tests)
+      target_compile_definitions(${solution_target} PRIVATE STACKBOOK_CHAPTER="${chapter}")
+      add_dependencies(stackbook_solutions ${solution_target})
+      add_test(NAME ${chapter}/solutions
+               COMMAND ${solution_target} --no-skip --test-suite=${chapter}_exercises)
+      set_tests_properties(${chapter}/solutions PROPERTIES LABELS "solutions;${chapter}")
     endif()
   endif()
 endfunction()

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <utility>
 
 #include <doctest/doctest.h>
 
@@ -230,6 +231,99 @@ DropScene<D> makeRestingBox(const Material& material) {
   scene.contactHeight = 0.5;
   scene.body = scene.world.addBody(box, unitBoxShape<D>(), material);
   return scene;
+}
+
+}  // namespace stackbook::testing
+
+namespace stackbook::testing {
+
+/// The analytic ball (disk in 2D) of radius R whose samples are a ring of `segments`
+/// points in the plane of axis 0 and the up axis, the plane it rolls in (in 3D, plus the
+/// two poles on axis 1, with the faces of a bipyramid). Contact while rolling along axis 0
+/// is then with a regular `segments`-gon: each switch from one vertex to the next is a
+/// small plastic impact that keeps the fraction 1 - (1 - cos(2 pi / segments)) / (1 + k)
+/// of the angular velocity about the new vertex, k = I / (m R^2).
+template <int D>
+std::shared_ptr<const Shape<D>> rollingBallShape(double radius, int segments) {
+  if constexpr (D == 2) {
+    return std::make_shared<SphereShape<2>>(SphereSdf<2>(radius), regularPolygon(radius, segments));
+  } else {
+    SurfaceMesh<3> mesh;
+    for (int k = 0; k < segments; ++k) {
+      const double t = 2.0 * M_PI * k / segments;
+      mesh.vertices.push_back(Vec3(radius * std::cos(t), 0.0, radius * std::sin(t)));
+    }
+    const int north = segments, south = segments + 1;
+    mesh.vertices.push_back(Vec3(0.0, radius, 0.0));
+    mesh.vertices.push_back(Vec3(0.0, -radius, 0.0));
+    for (int k = 0; k < segments; ++k) {
+      const int next = (k + 1) % segments;
+      mesh.faces.push_back({k, next, north});
+      mesh.faces.push_back({next, k, south});
+    }
+    return std::make_shared<SphereShape<3>>(SphereSdf<3>(radius), std::move(mesh));
+  }
+}
+
+/// A ball rolling without slipping along axis 0 at speed v0 on the level static slab
+/// (top face at height 0), one ring vertex exactly touching the ground.
+template <int D>
+struct RollingScene {
+  World<D> world;
+  int body = -1;
+  double radius = 0.0;
+
+  const RigidBody<D>& ball() const { return world.bodies[static_cast<std::size_t>(body)]; }
+  double speed() const { return ball().velocity[0]; }
+  /// The angular speed of rolling, positive when it rolls along +axis 0.
+  double rollRate() const {
+    if constexpr (D == 2) {
+      return -ball().angularVelocity[0];
+    } else {
+      return ball().angularVelocity[1];
+    }
+  }
+  /// Slip speed |v - omega R| of the rolling contact.
+  double slip() const { return std::abs(speed() - rollRate() * radius); }
+};
+
+template <int D>
+RollingScene<D> makeRollingBall(double radius, double v0, const Material& ground,
+                                const Material& ballMaterial, int segments = 2000) {
+  RollingScene<D> scene;
+  scene.radius = radius;
+  scene.world.gravity = -kG * up<D>();
+  addSlab<D>(scene.world, 0.0, ground);
+  RigidBody<D> b = ball<D>(radius);
+  b.position = radius * up<D>();
+  b.velocity = v0 * axis<D>(0);
+  AngVec<D> w = AngVec<D>::Zero();
+  if constexpr (D == 2) {
+    w[0] = -v0 / radius;
+  } else {
+    w[1] = v0 / radius;
+  }
+  b.setAngularVelocity(w);
+  scene.body = scene.world.addBody(b, rollingBallShape<D>(radius, segments), ballMaterial);
+  return scene;
+}
+
+}  // namespace stackbook::testing
+
+namespace stackbook::testing {
+
+/// A box tilted by 0.3 rad, its lowest corner 2.6 cm above a 20 degree incline, with
+/// friction mu and restitution e: it lands on a corner, tips and rubs, which exercises both
+/// stages and every branch of the impulse.
+template <int D>
+World<D> makeTumblingBox(double mu, double e, double muRolling = 0.0) {
+  InclineScene<D> scene = makeIncline<D>(degrees(20.0), mu, e);
+  for (Material& m : scene.world.materials) m.rollingFriction = muRolling;
+  RigidBody<D>& box = scene.world.bodies[static_cast<std::size_t>(scene.block)];
+  box.orientation = tilt<D>(degrees(20.0) + 0.3);
+  box.position += 0.15 * scene.normal;
+  box.syncAngularVelocity();
+  return scene.world;
 }
 
 }  // namespace stackbook::testing

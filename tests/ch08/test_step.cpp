@@ -17,16 +17,10 @@ using namespace stackbook::testing;
 
 namespace {
 
-/// A box tilted by 0.3 rad, its lowest corner 2.6 cm above a 20 degree incline, mu 0.5,
-/// e 0.3: it lands on a corner, tips and rubs, which exercises both stages.
+/// The tumbling box of scenes.hpp with mu 0.5 and e 0.3.
 template <int D>
 World<D> tumblingBox() {
-  InclineScene<D> scene = makeIncline<D>(degrees(20.0), 0.5, 0.3);
-  RigidBody<D>& box = scene.world.bodies[static_cast<std::size_t>(scene.block)];
-  box.orientation = tilt<D>(degrees(20.0) + 0.3);
-  box.position += 0.15 * scene.normal;
-  box.syncAngularVelocity();
-  return scene.world;
+  return makeTumblingBox<D>(0.5, 0.3);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 /// from a Recording, so the simulator records once and the writers never see the World.
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -47,12 +48,23 @@ class Recording {
                                   std::to_string(world.bodies.size()) + " bodies but the recording " +
                                   std::to_string(visuals_.size()) + " visuals");
     }
-    if (!times_.empty() && t < times_.back()) {
-      throw std::invalid_argument("Recording::record: time went back");
-    }
     std::vector<Pose<D>> frame;
     frame.reserve(world.bodies.size());
     for (const RigidBody<D>& body : world.bodies) frame.push_back(poseOf<D>(body));
+    recordPoses(t, std::move(frame));
+  }
+
+  /// Append a frame at time t from the poses themselves (one per visual, in order): for
+  /// recordings that do not come from a World, such as the output writers' tests.
+  void recordPoses(double t, std::vector<Pose<D>> frame) {
+    if (frame.size() != visuals_.size()) {
+      throw std::invalid_argument("Recording::recordPoses: the frame has " +
+                                  std::to_string(frame.size()) + " poses but the recording " +
+                                  std::to_string(visuals_.size()) + " visuals");
+    }
+    if (std::isnan(t) || (!times_.empty() && t < times_.back())) {
+      throw std::invalid_argument("Recording::record: time went back (or is NaN)");
+    }
     times_.push_back(t);
     poses_.push_back(std::move(frame));
   }

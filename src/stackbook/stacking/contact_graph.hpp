@@ -8,9 +8,11 @@
 // =========================================================================================
 // The chapter page needs the time step of chapter 8 and is written after it. This note is
 // its plan: what the page will derive, which code it will show, and the pitfalls it must
-// name. It is a plain comment on purpose (Doxygen does not render it). The graph
-// algorithms it describes are finished and tested (tests/ch09); the shock-propagation pass
-// and its simulation tests come with the chapter.
+// name. It is a plain comment on purpose (Doxygen does not render it). Everything it
+// describes is implemented and tested (tests/ch09): the graph algorithms here, and the
+// graph of a world, the freeze and the pass in shock_propagation.hpp. Where the chapter
+// departs from this plan, the page (chapters/09_shock_propagation.md) is authoritative;
+// the notes marked "(as built)" below say where.
 //
 // Files
 //   contact_graph.hpp                  the graph (this file)
@@ -38,7 +40,11 @@
 //    chapter will implement (PhysBAM, Compute_Contact_Graph): advance body b with its new,
 //    gravity-updated velocity while every other body keeps its old one; if b then
 //    interferes with a, add a -> b. Gravity picks the direction; no "up" vector is needed,
-//    and two boxes side by side usually get no edge. Both a -> b and b -> a can occur
+//    and two boxes side by side usually get no edge. (As built: the hook runs after the
+//    contact stage, so "old" is the velocity the contact stage left and "new" adds dt a
+//    once more; and the advanced body must also *approach* at an interfering sample, or a
+//    resting pair that already overlaps by more than dt^2 g gets both edges: Eq. (9.3).)
+//    Both a -> b and b -> a can occur
 //    (two leaning planks): mutual support. The graph is built once per step from predicted
 //    positions and does not change during the pass (a documented staleness). Static bodies
 //    have no parents in practice, but nothing here assumes it; a static body is simply a

@@ -8,6 +8,8 @@
 #include <functional>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "stackbook/stepping/effects.hpp"
 #include "stackbook/stepping/impulse_stage.hpp"
@@ -31,6 +33,59 @@ void checkStepInput(const World<D>& world, const StepSettings& settings, const c
   validateStepSettings(settings, caller);
   validateWorld<D>(world, caller);
 }
+
+/// The state of every body at the start of a step, for quarantine().
+template <int D>
+struct StepStart {
+  std::vector<Vec<D>> positions;
+  std::vector<Orientation<D>> orientations;
+
+  explicit StepStart(const World<D>& world) {
+    positions.reserve(world.bodies.size());
+    orientations.reserve(world.bodies.size());
+    for (const RigidBody<D>& b : world.bodies) {
+      positions.push_back(b.position);
+      orientations.push_back(b.orientation);
+    }
+  }
+};
+
+/// The first non-finite field of a body, or nullptr when all are finite.
+template <int D>
+const char* nonFiniteField(const RigidBody<D>& b) {
+  if (!b.velocity.allFinite()) return "velocity";
+  if (!b.angularMomentum.allFinite() || !b.angularVelocity.allFinite()) return "angular momentum";
+  if (!b.position.allFinite()) return "position";
+  if (!orientationFinite<D>(b.orientation)) return "orientation";
+  return nullptr;
+}
+
+// [quarantine_step]
+/// B21: after the position update, every body whose state is not finite is put back at
+/// its pose from the start of the step (finite, since validateWorld() checked it), its
+/// velocity and angular momentum are zeroed, and it is made static; the step records it
+/// in counters.quarantined. The other bodies are untouched, and the next step, which
+/// validates the world again, proceeds. O(n) per step.
+template <int D>
+void quarantine(World<D>& world, const StepStart<D>& start, StepCounters& counters) {
+  for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+    RigidBody<D>& b = world.bodies[i];
+    const char* field = nonFiniteField<D>(b);
+    if (field == nullptr) continue;
+    b.position = start.positions[i];
+    b.orientation = start.orientations[i];
+    b.velocity.setZero();
+    b.angularMomentum.setZero();
+    b.inverseMass = 0.0;
+    b.inverseInertia.setZero();
+    b.syncAngularVelocity();
+    counters.quarantined.push_back(
+        Quarantine{static_cast<int>(i), std::string(field) +
+                                            " became non-finite during the step; restored to "
+                                            "the pose at its start, stopped and made static"});
+  }
+}
+// [quarantine_step]
 
 inline double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -69,9 +124,10 @@ inline StageSpec contactStageSpec(const StepSettings& s, const Effects& effects,
 /// 2. velocity update v += dt g (Eq. (5.7));
 /// 3. contact stage: detect at x' = x + dt v (Eq. (8.2)), sweep k with e_k (Eq. (8.5));
 /// 4. hook (shock propagation in chapter 9; nothing by default);
+/// 5. position update x += dt v, R <- exp(dt [omega]x) R (Eqs. (5.8)-(5.12));
+/// 6. quarantine: a body whose state became non-finite is restored and made static (B21).
 /// Each stage runs only if its effect does (resolveEffects() of the scene and
 /// settings.effects); counters.effects records what ran.
-/// 5. position update x += dt v, R <- exp(dt [omega]x) R (Eqs. (5.8)-(5.12)).
 /// Throws std::invalid_argument for a bad world or settings. Returns this step's counters.
 template <int D>
 StepCounters gbfStep(World<D>& world, const StepSettings& settings,
@@ -81,6 +137,7 @@ StepCounters gbfStep(World<D>& world, const StepSettings& settings,
   const double dt = settings.dt;
   StepCounters counters;
   counters.steps = 1;
+  const detail::StepStart<D> stepStart(world);
   Effects effects = resolveEffects<D>(world, settings.effects);
   effects.shockPropagation = effects.shockPropagation && static_cast<bool>(hook);
 
@@ -118,6 +175,7 @@ StepCounters gbfStep(World<D>& world, const StepSettings& settings,
   t = std::chrono::steady_clock::now();
   for (RigidBody<D>& body : world.bodies) advancePosition<D>(body, dt);  // Eqs. (5.8)-(5.12)
   counters.positionUpdateSeconds += detail::secondsSince(t);
+  detail::quarantine<D>(world, stepStart, counters);  // B21: isolate a body gone non-finite
   counters.totalSeconds = detail::secondsSince(start);
   return counters;
 }

@@ -16,6 +16,7 @@
 #include "stackbook/collision/narrow_phase.hpp"
 #include "stackbook/impulse/collision_matrix.hpp"
 #include "stackbook/impulse/frictional_impulse.hpp"
+#include "stackbook/impulse/rolling_friction.hpp"
 #include "stackbook/stepping/step_counters.hpp"
 #include "stackbook/stepping/step_settings.hpp"
 #include "stackbook/stepping/world.hpp"
@@ -109,6 +110,20 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
     applyPairImpulse<D>(owner, rOwner, other, rOther, impulse.j);  // +j owner, -j other
     counters.countImpulse(impulse.branch);
     if (impulse.restitution > 0.0) ++counters.elasticImpulses;
+    // [pair_rolling]
+    // Rolling and spinning friction act only after a sticking impulse, and only when the
+    // effect runs and the pair's coefficient is positive: with mu_r = 0 nothing here runs,
+    // so the trajectory is bit for bit the one without the effect (Eqs. (8.6)-(8.7)).
+    if (spec.rollingFriction && material.rollingFriction > 0.0 &&
+        impulse.branch == ImpulseBranch::Sticking) {
+      const RollingFrictionImpulse<D> rolling = rollingFrictionImpulse<D>(
+          owner, rOwner, other, rOther, s.normal, impulse.j.dot(s.normal), material.rollingFriction);
+      if (!rolling.isZero()) {
+        applyRollingFriction<D>(owner, rOwner, other, rOther, rolling);
+        ++counters.rollingImpulses;
+      }
+    }
+    // [pair_rolling]
     ++applied;
     views[static_cast<std::size_t>(s.owner)].pose = testedPose<D>(world, s.owner, spec.lookahead, dt);
     views[static_cast<std::size_t>(s.other)].pose = testedPose<D>(world, s.other, spec.lookahead, dt);

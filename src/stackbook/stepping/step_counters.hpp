@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "stackbook/collision/detection_counters.hpp"
 #include "stackbook/impulse/contact_impulse.hpp"
@@ -68,6 +69,17 @@ struct StageCounters {
 };
 // [stage_counters]
 
+// [quarantine]
+/// A body the step isolated because its state became non-finite during the step (B21):
+/// restored to its pose at the start of the step, its velocity and angular momentum set
+/// to zero, and made static (1/m = 0, 1/I = 0), so that it stays in the scene as an
+/// immovable obstacle and cannot pass NaN to any other body through a contact.
+struct Quarantine {
+  int body = -1;        ///< index in World::bodies
+  std::string message;  ///< what was found, e.g. "velocity became non-finite in step 1"
+};
+// [quarantine]
+
 // [step_counters]
 /// The work of one or more steps, stage by stage. Add steps up with +=.
 struct StepCounters {
@@ -81,8 +93,11 @@ struct StepCounters {
   double positionUpdateSeconds = 0.0;
   double hookSeconds = 0.0;  ///< time spent in the post-contact hook (chapter 9)
   double totalSeconds = 0.0;
+  /// Bodies quarantined (for several steps: all of them, in order).
+  std::vector<Quarantine> quarantined;
 
   StepCounters& operator+=(const StepCounters& o) {
+    quarantined.insert(quarantined.end(), o.quarantined.begin(), o.quarantined.end());
     steps += o.steps;
     collision += o.collision;
     contact += o.contact;
@@ -103,6 +118,7 @@ struct StepCounters {
         << "\n  shock:     " << shock.summary() << "\n  velocity update "
         << velocityUpdateSeconds * 1e3 << " ms, position update " << positionUpdateSeconds * 1e3
         << " ms, hook " << hookSeconds * 1e3 << " ms";
+    for (const Quarantine& q : quarantined) out << "\n  quarantined body " << q.body << ": " << q.message;
     return out.str();
   }
 };

@@ -16,7 +16,8 @@ namespace stackbook {
 /// 1. velocity update v += dt g and position update x += dt v (Eqs. (5.7)-(5.12));
 /// 2. collision stage at the new poses with the pair's e and mu;
 /// 3. contact stage at the new poses with the ramp e_k (Eq. (8.5));
-/// 4. hook (as in gbfStep()).
+/// 4. hook (as in gbfStep());
+/// 5. quarantine of bodies gone non-finite (as in gbfStep()).
 /// A body resting on a slope falls into it by dt^2 g cos(theta) in step 1, and with
 /// e > 0 the collision stage then reflects that approach: the body hops, the "vibration"
 /// GBF's order removes. Throws std::invalid_argument for a bad world or settings.
@@ -28,6 +29,7 @@ StepCounters traditionalStep(World<D>& world, const StepSettings& settings,
   const double dt = settings.dt;
   StepCounters counters;
   counters.steps = 1;
+  const detail::StepStart<D> stepStart(world);
   Effects effects = resolveEffects<D>(world, settings.effects);
   effects.shockPropagation = effects.shockPropagation && static_cast<bool>(hook);
   counters.effects = effects;
@@ -56,6 +58,7 @@ StepCounters traditionalStep(World<D>& world, const StepSettings& settings,
     hook(world, settings, counters);
     counters.hookSeconds += detail::secondsSince(t);
   }
+  detail::quarantine<D>(world, stepStart, counters);  // B21
   counters.totalSeconds = detail::secondsSince(start);
   return counters;
 }

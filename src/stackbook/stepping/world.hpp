@@ -28,9 +28,12 @@ struct Material {
   double restitution = 0.0;
   /// Coulomb friction coefficient mu >= 0 (static and kinetic alike, as in GBF).
   double friction = 0.0;
-  /// Rolling-friction coefficient (a length, >= 0). Off (0) by default. The step of
-  /// chapter 8 has no rolling friction and rejects a scene that sets it, rather than
-  /// silently ignoring it; rolling and spinning friction are a later chapter's.
+  /// Rolling-friction coefficient mu_r >= 0, a length in metres (0 by default: off). After a
+  /// sticking impulse with normal part j_n, the couple (angular impulse) that brakes the
+  /// pair's relative rolling is at most mu_r j_n, and likewise the couple that brakes
+  /// spinning (Eq. (8.7)): the classical rolling-resistance law, torque <= mu_r times the
+  /// normal force, integrated over the impulse. A ball of radius R rolling on level
+  /// ground then decelerates at mu_r g / (R (1 + I / (m R^2))) (Eq. (8.8)).
   double rollingFriction = 0.0;
 };
 // [material]

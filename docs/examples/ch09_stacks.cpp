@@ -1,0 +1,193 @@
+// Chapter 9: what shock propagation buys, measured. Prints Markdown tables for the chapter
+// page: box stacks (validation B14), heavy on light (B4), the plank on two unequal stacks
+// (B17, topological levels against BFS depth), the card A-frame (A17), the tilted stack
+// (A19), the 2D pyramid (B15) and the cost per stage on the pyramid, the largest scene.
+// Every run uses StepSettings{} (dt = 1e-3, GBF's loop counts) and unit boxes of mass 1.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "../../tests/ch09/stack_scenes.hpp"
+
+using namespace stackbook;
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+void stacksTable() {
+  const double seconds = 1.0;
+  std::printf("| boxes | shock propagation | drift (m) | top sag (m) | tolerance N 1e-4 (m) | max speed (m/s) | largest gap (m) | ms per step |\n");
+  std::printf("|---|---|---|---|---|---|---|---|\n");
+  for (const int n : {10, 20, 30}) {
+    const World<2> start = stacks::boxStack<2>(n, Material{0.0, 0.5, 0.0});
+    for (const bool shock : {false, true}) {
+      World<2> world = start;
+      const auto t = std::chrono::steady_clock::now();
+      const StepCounters c = stacks::run<2>(world, StepSettings{}, seconds, shock);
+      const double wall = secondsSince(t);
+      const stacks::StackState<2> s = stacks::measureStack<2>(start, world, 1, n);
+      std::printf("| %d | %s | %.2e | %.2e | %.1e | %.2e | %.2e | %.2f |\n", n, shock ? "on" : "off",
+                  s.drift, s.sag, n * 1e-4, s.maxSpeed, s.largestGap,
+                  1e3 * wall / static_cast<double>(c.steps));
+    }
+  }
+  std::printf("\nTable: 2D stacks after %.1f s, mu = 0.5, e = 0. Drift: the largest horizontal "
+              "displacement of a box; sag: the top box's drop (negative: it rose).\n\n", seconds);
+}
+
+void heavyTable() {
+  std::printf("| shock propagation | heavy box sinks (m) | light box speed (m/s) | heavy box speed (m/s) |\n");
+  std::printf("|---|---|---|---|\n");
+  const Material material{0.0, 0.5, 0.0};
+  World<2> start = stacks::groundWorld<2>(material);
+  stacks::addBox<2>(start, Vec2(1.0, 1.0), 1.0, Vec2(0.0, 0.5), material);
+  stacks::addBox<2>(start, Vec2(1.0, 1.0), 1000.0, Vec2(0.0, 1.5), material);
+  for (const bool shock : {false, true}) {
+    World<2> world = start;
+    stacks::run<2>(world, StepSettings{}, 1.0, shock);
+    std::printf("| %s | %.2e | %.2e | %.2e |\n", shock ? "on" : "off",
+                start.bodies[2].position.y() - world.bodies[2].position.y(),
+                world.bodies[1].velocity.norm(), world.bodies[2].velocity.norm());
+  }
+  std::printf("\nTable: a 1000 kg box on a 1 kg box on the ground (2D), after 1 s.\n\n");
+}
+
+void plankTable() {
+  std::printf("| levels | largest plank tilt in 1 s (rad) | plank tilt at 1 s (rad) | steps with a contact still approaching faster than 1e-5 m/s |\n");
+  std::printf("|---|---|---|---|\n");
+  for (const Layering layering : {Layering::Topological, Layering::BfsDepth}) {
+    World<2> world = stacks::plankOnTwoStacks<2>(Material{0.0, 0.5, 0.0});
+    StepSettings settings;
+    settings.effects.shockPropagation = true;
+    double largest = 0.0;
+    int approaching = 0;
+    const PostContactHook<2> hook = [layering, &approaching](World<2>& w, const StepSettings& s, StepCounters& c) {
+      shockPropagation<2>(w, s, c.shock, layering);
+      const ContactGraph graph = worldContactGraph<2>(w, stepGraphSettings(s, c.effects));
+      if (approachingContacts<2>(w, graph, s.dt, 1e-5) > 0) ++approaching;
+    };
+    for (int n = 0; n < 1000; ++n) {
+      gbfStep<2>(world, settings, hook);
+      largest = std::max(largest, stacks::plankTilt<2>(world));
+    }
+    std::printf("| %s | %.2e | %.2e | %d of 1000 |\n",
+                layering == Layering::Topological ? "topological" : "BFS depth", largest,
+                stacks::plankTilt<2>(world), approaching);
+  }
+  std::printf("\nTable: the plank on a 2-box and a 4-box stack (2D), 1 s with shock propagation.\n\n");
+}
+
+void cardsTable() {
+  std::printf("| mu | left card centre height at start (m) | at 1 s (m) | at 2 s (m) | left card turned by (rad) |\n");
+  std::printf("|---|---|---|---|---|\n");
+  const double beta = 25.0 * M_PI / 180.0;
+  for (const double mu : {0.30, 0.25, 0.22, 0.15}) {
+    World<2> world = stacks::cardFrame(beta, Material{0.0, mu, 0.0});
+    const World<2> start = world;
+    stacks::run<2>(world, StepSettings{}, 1.0, true);
+    const double at1 = world.bodies[1].position.y();
+    stacks::run<2>(world, StepSettings{}, 1.0, true);
+    std::printf("| %.2f | %.4f | %.4f | %.4f | %.2e |\n", mu, start.bodies[1].position.y(), at1,
+                world.bodies[1].position.y(),
+                std::abs(world.bodies[1].orientation.angle() - start.bodies[1].orientation.angle()));
+  }
+  std::printf("\nTable: the card A-frame, beta = 25 degrees, cards 1 m by 1 cm; "
+              "mu_req = tan(beta)/2 = %.4f.\n\n", std::tan(beta) / 2.0);
+}
+
+void tiltedTable() {
+  std::printf("| shock propagation | top box drop at 0.5 s (m) | at 1 s (m) | at 2 s (m) |\n");
+  std::printf("|---|---|---|---|\n");
+  for (const bool shock : {false, true}) {
+    World<2> world = stacks::boxStack<2>(10, Material{0.0, 0.5, 0.0}, 0.2);
+    const double y0 = world.bodies[10].position.y();
+    double drop[3];
+    stacks::run<2>(world, StepSettings{}, 0.5, shock);
+    drop[0] = y0 - world.bodies[10].position.y();
+    stacks::run<2>(world, StepSettings{}, 0.5, shock);
+    drop[1] = y0 - world.bodies[10].position.y();
+    stacks::run<2>(world, StepSettings{}, 1.0, shock);
+    drop[2] = y0 - world.bodies[10].position.y();
+    std::printf("| %s | %.2e | %.2e | %.2e |\n", shock ? "on" : "off", drop[0], drop[1], drop[2]);
+  }
+  std::printf("\nTable: ten unit boxes, each 0.2 to the side of the one below (2D); it must topple.\n\n");
+}
+
+double mirrorError(const World<2>& world, int base) {
+  double error = 0.0;
+  int first = 1;
+  for (int row = 0; row < base; ++row) {
+    const int count = base - row;
+    for (int i = 0; i < count; ++i) {
+      error = std::max(error, std::abs(world.bodies[static_cast<std::size_t>(first + i)].position.x() +
+                                       world.bodies[static_cast<std::size_t>(first + count - 1 - i)].position.x()));
+    }
+    first += count;
+  }
+  return error;
+}
+
+void pyramidTables() {
+  const int base = 20;
+  const double seconds = 0.3;
+  const World<2> start = stacks::pyramid2d(base, Material{0.0, 0.5, 0.0});
+  StepCounters counters[2];
+  std::printf("| shock propagation | mirror error at 0.1 s (m) | mirror error at %.1f s (m) | largest displacement (m) | apex drop (m) |\n", seconds);
+  std::printf("|---|---|---|---|---|\n");
+  for (const bool shock : {false, true}) {
+    World<2> world = start;
+    StepCounters& c = counters[shock ? 1 : 0];
+    c = stacks::run<2>(world, StepSettings{}, 0.1, shock);
+    const double early = mirrorError(world, base);
+    c += stacks::run<2>(world, StepSettings{}, seconds - 0.1, shock);
+    double moved = 0.0;
+    for (std::size_t k = 1; k < world.bodies.size(); ++k) {
+      moved = std::max(moved, (world.bodies[k].position - start.bodies[k].position).norm());
+    }
+    const std::size_t apex = world.bodies.size() - 1;
+    std::printf("| %s | %.2e | %.2e | %.2e | %.2e |\n", shock ? "on" : "off", early, mirrorError(world, base),
+                moved, start.bodies[apex].position.y() - world.bodies[apex].position.y());
+  }
+  std::printf("\nTable: the 2D pyramid with a %d-box base (%zu boxes), after %.1f s.\n\n", base,
+              start.bodies.size() - 1, seconds);
+
+  const StepCounters& c = counters[1];
+  const double steps = static_cast<double>(c.steps);
+  std::printf("| stage | ms per step | sweeps per step | pair visits per step | impulses per step | narrow-phase pair queries per step | pair loops that hit the cap per step |\n");
+  std::printf("|---|---|---|---|---|---|---|\n");
+  const auto row = [steps](const char* name, const StageCounters& s) {
+    std::printf("| %s | %.2f | %.1f | %.1f | %.1f | %.1f | %.1f |\n", name, 1e3 * s.seconds / steps,
+                static_cast<double>(s.sweeps) / steps, static_cast<double>(s.pairVisits) / steps,
+                static_cast<double>(s.impulses) / steps,
+                static_cast<double>(s.detection.pairQueries) / steps,
+                static_cast<double>(s.pairIterationCapHits) / steps);
+  };
+  row("collision", c.collision);
+  row("contact", c.contact);
+  row("shock propagation (graph, levels, pass)", c.shock);
+  std::printf("| whole step | %.2f | | | | | |\n", 1e3 * c.totalSeconds / steps);
+  std::printf("\nTable: the work of each stage on the pyramid with shock propagation, "
+              "averaged over %.0f steps.\n", steps);
+}
+
+}  // namespace
+
+int main() {
+  std::printf("#### Tall stacks (B14)\n\n");
+  stacksTable();
+  std::printf("#### Heavy on light (B4)\n\n");
+  heavyTable();
+  std::printf("#### The plank on two stacks (B17)\n\n");
+  plankTable();
+  std::printf("#### The card A-frame (A17)\n\n");
+  cardsTable();
+  std::printf("#### The tilted stack (A19)\n\n");
+  tiltedTable();
+  std::printf("#### The pyramid (B15) and the cost of each stage\n\n");
+  pyramidTables();
+  return 0;
+}

@@ -1,0 +1,272 @@
+// The stackbook program's command line (chapter 10). See cli.hpp.
+#include "cli.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "stackbook/output/animated_gltf.hpp"
+#include "stackbook/output/animated_svg.hpp"
+#include "stackbook/output/trajectory_csv.hpp"
+#include "stackbook/output/viewer_html.hpp"
+#include "stackbook/scene/scene.hpp"
+#include "stackbook/scene/simulation.hpp"
+
+namespace stackbook::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The scene the program runs when called without arguments.
+constexpr const char* kDemoScene = "pyramid_2d";
+
+const char* scenesDir() { return STACKBOOK_SCENES_DIR; }
+
+int reportError(const std::string& message, int code) {
+  std::cerr << "stackbook: error: " << message << "\n";
+  return code;
+}
+
+/// A scene argument: an existing file, else a bundled scene by name (with or without
+/// ".json"). Throws SceneError if neither exists.
+std::string resolveScene(const std::string& name) {
+  std::error_code ec;
+  if (fs::is_regular_file(name, ec)) return name;
+  if (name.find('/') == std::string::npos) {
+    for (const std::string& candidate : {name, name + ".json"}) {
+      const fs::path bundled = fs::path(scenesDir()) / candidate;
+      if (fs::is_regular_file(bundled, ec)) return bundled.string();
+    }
+    throw SceneError(name, "", "no such scene file, and no bundled scene of that name (see `stackbook list`)");
+  }
+  throw SceneError(name, "", "no such scene file");
+}
+
+/// Draws "[#####.....]  45%  1234 steps/s  3.2 s left" on stderr, at most 10 times a second.
+class ProgressBar {
+ public:
+  ProgressBar(bool enabled, double totalSteps)
+      : enabled_(enabled), totalSteps_(totalSteps), start_(std::chrono::steady_clock::now()) {}
+  void update(double fraction) {
+    if (!enabled_) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (fraction < 1.0 && now - last_ < std::chrono::milliseconds(100)) return;
+    last_ = now;
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    const int width = 30;
+    const int filled = static_cast<int>(std::lround(fraction * width));
+    const double rate = elapsed > 0.0 ? fraction / elapsed : 0.0;  // of the run per second
+    const double left = rate > 0.0 ? (1.0 - fraction) / rate : 0.0;
+    char line[160];
+    std::snprintf(line, sizeof line, "\r[%s%s] %3d%%  %8.0f steps/s  %6.1f s left ",
+                  std::string(static_cast<std::size_t>(filled), '#').c_str(),
+                  std::string(static_cast<std::size_t>(width - filled), '.').c_str(),
+                  static_cast<int>(fraction * 100.0), rate * totalSteps_, left);
+    std::cerr << line << std::flush;
+    if (fraction >= 1.0) std::cerr << "\n";
+  }
+
+ private:
+  bool enabled_;
+  double totalSteps_;
+  std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point last_{};
+};
+
+/// Writes every output of `run` into `out` and returns the paths written.
+std::vector<std::string> writeOutputs(const Scene& scene, const SceneRun& run, const fs::path& out,
+                                      const nlohmann::json& summary) {
+  std::vector<std::string> files;
+  fs::create_directories(out);
+  std::visit(
+      [&](const auto& r) {
+        using Result = std::decay_t<decltype(r)>;
+        const std::string csv = (out / "trajectory.csv").string();
+        writeTrajectoryCsv(r.recording, csv);
+        files.push_back(csv);
+        if constexpr (std::is_same_v<Result, RunResult<2>>) {
+          const std::string svg = (out / "animation.svg").string();
+          writeAnimatedSvg(r.recording, svg);
+          files.push_back(svg);
+        } else {
+          // Up is against gravity (the last axis, z, in a scene without gravity).
+          const Vec3 g = std::get<SceneBodies<3>>(scene.bodies).world.gravity;
+          GlbOptions glb;
+          glb.up = g.norm() > 0.0 ? Vec3(-g.normalized()) : Vec3::UnitZ();
+          const std::string glbPath = (out / "animation.glb").string();
+          writeAnimatedGlb(r.recording, glbPath, glb);
+          files.push_back(glbPath);
+          ViewerOptions viewer;
+          viewer.title = fs::path(scene.file).stem().string();
+          const std::string html = (out / "viewer.html").string();
+          writeViewerHtml(glbPath, html, viewer);
+          files.push_back(html);
+        }
+      },
+      run);
+  const std::string summaryPath = (out / "summary.json").string();
+  files.push_back(summaryPath);
+  nlohmann::json full = summary;
+  full["files"] = files;
+  std::ofstream file(summaryPath);
+  file << full.dump(2) << "\n";
+  if (!file) throw std::runtime_error("cannot write " + summaryPath);
+  return files;
+}
+
+struct RunArgs {
+  std::string scene;
+  std::string out;
+  std::optional<double> duration;
+  std::optional<double> dt;
+  std::vector<std::string> sets;
+  bool quiet = false;
+};
+
+std::string formatValue(double x) {
+  std::ostringstream s;
+  s.precision(17);
+  s << x;
+  return s.str();
+}
+
+int runCommand(const RunArgs& args, bool demo) {
+  std::string path;
+  Scene scene;
+  try {
+    path = resolveScene(args.scene);
+    std::vector<std::string> overrides = args.sets;
+    if (args.dt) overrides.push_back("dt=" + formatValue(*args.dt));
+    if (args.duration) overrides.push_back("duration=" + formatValue(*args.duration));
+    scene = loadScene(path, overrides);
+  } catch (const SceneError& e) {
+    return reportError(e.what(), kBadInput);
+  }
+  const fs::path out = args.out.empty() ? fs::path("stackbook-out") / fs::path(path).stem() : fs::path(args.out);
+  try {
+    ProgressBar bar(!args.quiet && isatty(fileno(stderr)) != 0, std::ceil(scene.duration / scene.settings.dt - 1e-9));
+    RunOptions options;
+    options.progress = [&bar](double fraction, double) { bar.update(fraction); };
+    const SceneRun run = runScene(scene, options);
+    nlohmann::json summary = runSummaryJson(scene, run);
+    const std::vector<std::string> files = writeOutputs(scene, run, out, summary);
+    summary["files"] = files;
+    if (!args.quiet) std::cout << runSummaryText(summary);
+    if (demo) {
+      std::cout << "The demo's outputs are in " << fs::absolute(out).string() << "/; open "
+                << (scene.dimension == 2 ? "animation.svg" : "viewer.html") << " there in a browser.\n";
+    }
+    if (!summary.at("finite").get<bool>()) return reportError("the run ended in a non-finite state", kRunFailed);
+  } catch (const std::exception& e) {
+    return reportError(e.what(), kRunFailed);
+  }
+  return kOk;
+}
+
+int listCommand() {
+  std::vector<fs::path> files;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(scenesDir(), ec)) {
+    if (entry.path().extension() == ".json") files.push_back(entry.path());
+  }
+  if (ec) return reportError(std::string("cannot list ") + scenesDir() + ": " + ec.message(), kRunFailed);
+  std::sort(files.begin(), files.end());
+  std::size_t width = 0;
+  for (const fs::path& f : files) width = std::max(width, f.stem().string().size());
+  std::cout << "Bundled scenes (" << scenesDir() << "):\n";
+  for (const fs::path& f : files) {
+    std::string description;
+    try {
+      const nlohmann::json doc = readSceneJson(f.string());
+      description = doc.value("description", std::string("(no description)"));
+    } catch (const std::exception& e) {
+      description = std::string("(unreadable: ") + e.what() + ")";
+    }
+    std::cout << "  " << f.stem().string() << std::string(width + 2 - f.stem().string().size(), ' ')
+              << description << "\n";
+  }
+  std::cout << "Run one with `stackbook run NAME`.\n";
+  return kOk;
+}
+
+int checkCommand(const std::string& name, const std::vector<std::string>& sets) {
+  try {
+    const std::string path = resolveScene(name);
+    const Scene scene = loadScene(path, sets);
+    std::cout << path << ": ok (" << scene.dimension << "D, " << scene.bodyCount() << " bodies, "
+              << static_cast<long long>(std::ceil(scene.duration / scene.settings.dt - 1e-9)) << " steps of dt = "
+              << scene.settings.dt << " s)\n";
+  } catch (const SceneError& e) {
+    return reportError(e.what(), kBadInput);
+  }
+  return kOk;
+}
+
+}  // namespace
+
+int runCli(int argc, char** argv) {
+  try {
+    CLI::App app{
+        "stackbook: rigid bodies with stacking (Guendelman, Bridson & Fedkiw 2003).\n"
+        "Without arguments it runs the bundled demo scene and says where its outputs are."};
+    app.name("stackbook");
+    app.require_subcommand(0, 1);
+
+    RunArgs run;
+    CLI::App* runApp = app.add_subcommand("run", "Simulate a scene and write its outputs: trajectory.csv, "
+                                                 "summary.json, and animation.svg (2D) or animation.glb with "
+                                                 "viewer.html (3D)");
+    runApp->add_option("scene", run.scene, "Scene file, or the name of a bundled scene (stackbook list)")
+        ->required();
+    runApp->add_option("--out,-o", run.out, "Output folder (default: stackbook-out/<scene name>)");
+    // Checked with the scene (as --set duration=T and --set dt=H), so a bad value gets the
+    // same one-line message as a bad value in the file.
+    runApp->add_option("--duration", run.duration, "Simulated seconds (overrides the scene's duration)");
+    runApp->add_option("--dt", run.dt, "Time step in seconds (overrides the scene's dt)");
+    runApp->add_option("--set", run.sets,
+                       "Override a scene field before the checks: key=value, key a path like "
+                       "solver.contactIterations or bodies.2.velocity, value JSON (repeatable)");
+    runApp->add_flag("--quiet,-q", run.quiet, "No progress bar and no summary on the terminal");
+
+    std::string checkScene;
+    std::vector<std::string> checkSets;
+    CLI::App* checkApp = app.add_subcommand("check", "Validate a scene file without running it");
+    checkApp->add_option("scene", checkScene, "Scene file, or the name of a bundled scene")->required();
+    checkApp->add_option("--set", checkSets, "Override a scene field (as for run)");
+
+    CLI::App* listApp = app.add_subcommand("list", "List the bundled scenes with their descriptions");
+
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+      return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+      return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+      return reportError(std::string(e.what()) + " (see stackbook --help)", kBadInput);
+    }
+    if (runApp->parsed()) return runCommand(run, false);
+    if (checkApp->parsed()) return checkCommand(checkScene, checkSets);
+    if (listApp->parsed()) return listCommand();
+    RunArgs demo;
+    demo.scene = kDemoScene;
+    std::cout << "Running the bundled demo scene \"" << kDemoScene << "\" (stackbook --help for more).\n";
+    return runCommand(demo, true);
+  } catch (const std::exception& e) {
+    return reportError(e.what(), kRunFailed);
+  }
+}
+
+}  // namespace stackbook::app

@@ -1,0 +1,12 @@
+// Exercise 8.2 (your answer goes here): see ex08_2_contact_ramp.hpp and chapter 8.
+#include "stackbook/exercises/ex08_2_contact_ramp.hpp"
+
+namespace stackbook::exercises {
+
+std::vector<double> halvingContactRamp(int sweeps) {
+  // TODO(reader): e_k = -(1/2)^k for k < sweeps, and 0 for the last sweep.
+  (void)sweeps;
+  return {};
+}
+
+}  // namespace stackbook::exercises

@@ -1,0 +1,24 @@
+// Exercise 9.2 (your answer goes here): see ex09_2_softened_freezing.hpp and chapter 9.
+#include "stackbook/exercises/ex09_2_softened_freezing.hpp"
+
+namespace stackbook {
+
+template <int D>
+void softenedShockPass(World<D>& world, const ContactGraph& graph, const ContactLevels& levels,
+                       const StepSettings& settings, double softness, StageCounters& counters) {
+  // TODO(reader): sweep each level as shockPropagationPass() does, then scale the level's
+  // inverse masses and inertias by `softness`; restore them all at the end.
+  (void)world;
+  (void)graph;
+  (void)levels;
+  (void)settings;
+  (void)softness;
+  (void)counters;
+}
+
+template void softenedShockPass<2>(World<2>&, const ContactGraph&, const ContactLevels&,
+                                   const StepSettings&, double, StageCounters&);
+template void softenedShockPass<3>(World<3>&, const ContactGraph&, const ContactLevels&,
+                                   const StepSettings&, double, StageCounters&);
+
+}  // namespace stackbook

@@ -1,0 +1,14 @@
+// Exercise 9.3 (your answer goes here): see ex09_3_contact_islands.hpp and chapter 9.
+#include "stackbook/exercises/ex09_3_contact_islands.hpp"
+
+namespace stackbook {
+
+std::vector<std::vector<int>> contactIslands(const ContactGraph& graph, const std::vector<bool>& isStatic) {
+  // TODO(reader): flood-fill (iteratively) over children and parents, never through a
+  // static body.
+  (void)graph;
+  (void)isStatic;
+  return {};
+}
+
+}  // namespace stackbook

@@ -1,0 +1,60 @@
+#include "stackbook/output/trajectory_csv.hpp"
+
+#include "stackbook/output/output_files.hpp"
+
+namespace stackbook {
+
+namespace {
+
+/// A CSV field: quoted, with inner quotes doubled, when it holds a separator, a quote or a
+/// line end (RFC 4180).
+std::string csvField(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + '"';
+}
+
+}  // namespace
+
+template <int D>
+void writeTrajectoryCsv(const Recording<D>& recording, const std::string& path) {
+  using output_detail::exactDecimal;
+  std::string csv = D == 2 ? "time,body,name,x,y,angle\n" : "time,body,name,x,y,z,qw,qx,qy,qz\n";
+  const auto& visuals = recording.visuals();
+  for (std::size_t f = 0; f < recording.frameCount(); ++f) {
+    const std::string time = exactDecimal(recording.times()[f]);
+    for (std::size_t i = 0; i < recording.bodyCount(); ++i) {
+      const Pose<D>& pose = recording.poses()[f][i];
+      csv += time;
+      csv += ',';
+      csv += std::to_string(i);
+      csv += ',';
+      csv += csvField(visuals[i].name);
+      for (int k = 0; k < D; ++k) {
+        csv += ',';
+        csv += exactDecimal(pose.position[k]);
+      }
+      if constexpr (D == 2) {
+        csv += ',';
+        csv += exactDecimal(pose.orientation.angle());
+      } else {
+        const Eigen::Quaterniond& q = pose.orientation;
+        for (double c : {q.w(), q.x(), q.y(), q.z()}) {
+          csv += ',';
+          csv += exactDecimal(c);
+        }
+      }
+      csv += '\n';
+    }
+  }
+  output_detail::writeFileOrThrow("writeTrajectoryCsv", path, csv);
+}
+
+template void writeTrajectoryCsv<2>(const Recording<2>&, const std::string&);
+template void writeTrajectoryCsv<3>(const Recording<3>&, const std::string&);
+
+}  // namespace stackbook

@@ -1,0 +1,108 @@
+#pragma once
+/// \file
+/// \brief Scene files (chapter 10): a JSON description of a simulation (dimension,
+/// gravity, time step, solver knobs, effect overrides, materials, bodies) read, checked
+/// and turned into a World, its step settings and what each body looks like.
+///
+/// Every error is a SceneError naming the file, the JSON pointer of the offending field
+/// (RFC 6901, e.g. `/bodies/3/shape/size/1`) and what is wrong with it. Loading stops at
+/// the first error: later fields are often meaningless once an earlier one is wrong (a
+/// body whose shape type is misspelt has no size to check), and one precise line is what
+/// a person editing the file needs. The schema is docs/scene_format.md.
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "stackbook/output/recording.hpp"
+#include "stackbook/stepping/step_settings.hpp"
+#include "stackbook/stepping/world.hpp"
+
+namespace stackbook {
+
+// [scene_error]
+/// A problem with a scene file: which file, where in it (a JSON pointer, empty for the
+/// file as a whole) and what is wrong. what() is the one line a program prints:
+/// `scenes/stack.json: /bodies/2/shape/size/0: must be > 0, got -1`.
+class SceneError : public std::runtime_error {
+ public:
+  SceneError(const std::string& file, const std::string& pointer, const std::string& reason);
+  const std::string& file() const { return file_; }
+  const std::string& pointer() const { return pointer_; }
+  const std::string& reason() const { return reason_; }
+
+ private:
+  std::string file_;
+  std::string pointer_;
+  std::string reason_;
+};
+// [scene_error]
+
+/// What the recorder keeps (the "output" object of a scene).
+struct SceneOutputSettings {
+  /// Frames recorded per second of simulated time (> 0); the first frame is t = 0 and
+  /// the last one the end of the run.
+  double frameRate = 60.0;
+};
+
+// [scene_bodies]
+/// The bodies of a scene in dimension D: the world the step advances, how each body is
+/// drawn (its name, its surface in the body frame, its colour), and the JSON pointer each
+/// body came from (for messages about a body, e.g. an overlapping start).
+template <int D>
+struct SceneBodies {
+  World<D> world;
+  std::vector<BodyVisual<D>> visuals;
+  std::vector<std::string> pointers;
+};
+// [scene_bodies]
+
+// [scene]
+/// A loaded and checked scene.
+struct Scene {
+  std::string file;         ///< the file it came from, as named to loadScene()
+  std::string description;  ///< one line: what the scene shows
+  int dimension = 2;        ///< 2 or 3
+  double duration = 1.0;    ///< simulated seconds (> 0)
+  StepSettings settings;    ///< dt, loop counts, effect overrides, shock settings
+  SceneOutputSettings output;
+  bool allowOverlap = false;  ///< start even if bodies interpenetrate
+  std::variant<SceneBodies<2>, SceneBodies<3>> bodies;
+
+  /// Number of bodies.
+  int bodyCount() const;
+};
+// [scene]
+
+/// Reads, checks and builds the scene in `path`. Each entry of `overrides` is
+/// "key=value" (the --set option of the program): key is a path into the JSON separated
+/// by '.' or '/', e.g. `dt`, `solver.contactIterations`, `bodies.2.velocity`, and value is
+/// JSON (a bare word that is not JSON is taken as a string). Overrides are applied before
+/// the checks, so they are checked like the file. Throws SceneError.
+Scene loadScene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+/// The same for a JSON document already read: `file` names it in messages and `baseDir`
+/// is where mesh files are looked up. Throws SceneError.
+Scene parseScene(const nlohmann::json& document, const std::string& file,
+                 const std::filesystem::path& baseDir);
+
+/// The JSON of a scene file, with syntax errors reported as a SceneError with the line
+/// and column in the reason.
+nlohmann::json readSceneJson(const std::string& path);
+
+/// Applies one "key=value" override to `document` (see loadScene()). Throws SceneError
+/// naming `file` if the text has no '=' or the key is empty.
+void applySceneOverride(nlohmann::json& document, const std::string& keyValue,
+                        const std::string& file);
+
+/// Levenshtein distance: single-character insertions, deletions and substitutions.
+std::size_t editDistance(const std::string& a, const std::string& b);
+
+/// The candidate closest to `word` if it is close enough to be a plausible typo
+/// (distance at most max(1, |word| / 3), case ignored), else "".
+std::string closestName(const std::string& word, const std::vector<std::string>& candidates);
+
+}  // namespace stackbook

@@ -1,0 +1,282 @@
+#pragma once
+/// \file
+/// \brief Shock propagation (chapter 9): the contact graph of a world from predicted
+/// motion, the freeze guard that makes a level infinitely heavy, the bottom-up pass over
+/// the topological levels, and the step with the pass as chapter 8's post-contact hook.
+
+#include <chrono>
+#include <cstddef>
+#include <span>
+#include <stdexcept>
+#include <vector>
+
+#include "stackbook/stacking/contact_graph.hpp"
+#include "stackbook/stacking/contact_levels.hpp"
+#include "stackbook/stepping/gbf_step.hpp"
+
+namespace stackbook {
+
+// [graph_settings]
+/// How the contact graph is found in a world.
+struct ContactGraphSettings {
+  /// Time step of the prediction (the step's dt).
+  double dt = 1e-3;
+  /// Apply the world's loads (gravity) to the advanced body. Off, the advanced body keeps
+  /// its velocity, nothing singles it out, and only bodies that already approach get edges.
+  bool loads = true;
+  /// Narrow-phase settings (chapter 7).
+  NarrowPhaseSettings narrow;
+  /// Broad-phase settings; the margin is raised to cover the extra displacement dt^2 |a|.
+  BroadPhaseSettings broad;
+};
+// [graph_settings]
+
+// [world_contact_graph]
+/// The contact graph of `world` after the contact stage of a step (Eq. (9.3)). With v the
+/// velocities the contact stage left, every body b is tested at x_b + dt v_b ("old": the
+/// pose the position update will give). For each dynamic body p in turn, p alone is
+/// advanced with the "new" velocity v_p + dt a_p (a_p its loads, gravity), i.e. to
+/// x_p + dt (v_p + dt a_p); if p then interferes with body q at a sample where the
+/// relative velocity (p with its new velocity, q with its old one) approaches, the edge
+/// q -> p ("p rests on q") is added. Static bodies are never advanced: they get no
+/// parents. O(pairs) narrow-phase queries, two per broad-phase pair.
+template <int D>
+ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings& settings,
+                               DetectionCounters* counters = nullptr) {
+  const int n = world.size();
+  std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, settings.dt);
+  // The advanced bodies: a copy of p with v_p + dt a_p and L_p + dt tau_p.
+  std::vector<RigidBody<D>> advanced(world.bodies.begin(), world.bodies.end());
+  double reach = 0.0;
+  for (int p = 0; p < n; ++p) {
+    const std::size_t k = static_cast<std::size_t>(p);
+    if (world.bodies[k].isStatic() || !settings.loads) continue;
+    advanceVelocity<D>(advanced[k], settings.dt, world.loads(p));  // Eq. (5.7)
+    const double moved = settings.dt * (advanced[k].velocity - world.bodies[k].velocity).norm();
+    reach = std::max(reach, moved);
+  }
+  BroadPhaseSettings broad = settings.broad;
+  broad.margin = std::max(broad.margin, reach);  // the extra dt^2 |a| of the advanced body
+  const std::vector<BodyPair> candidates = sweepAndPrune<D>(views, broad, counters);
+
+  std::vector<ContactPair> edges;
+  // One candidate pair is tested twice, each body advanced in turn: bound 2 * pairs.
+  for (const BodyPair& pair : candidates) {
+    for (const int p : {pair.first, pair.second}) {
+      const int q = p == pair.first ? pair.second : pair.first;
+      const std::size_t k = static_cast<std::size_t>(p);
+      if (world.bodies[k].isStatic()) continue;
+      const CollisionBody<D> old = views[k];
+      views[k] = collisionBodyAt<D>(advanced[k], *world.shapes[k],
+                                    predictPose<D>(advanced[k], settings.dt));  // x_p + dt (v_p + dt a_p)
+      const std::vector<InterferenceSample<D>> samples =
+          pairInterference<D>(views, pair, settings.narrow, counters);
+      if (deepestApproachingSample<D>(samples, views)) edges.push_back(ContactPair{q, p});
+      views[k] = old;
+    }
+  }
+  return ContactGraph(n, edges);
+}
+// [world_contact_graph]
+
+// [freeze_guard]
+/// Temporary infinite mass (Eq. (9.4)): freeze(i) sets 1/m and I^{-1} of body i to zero,
+/// so by Eq. (1.9) its K is 0, RigidBody::applyImpulse leaves it alone and an impulse
+/// against it changes only the other body. The destructor restores every frozen body's
+/// exact values (bit for bit), also when an exception leaves the pass. The cached omega
+/// is not touched (nothing calls syncAngularVelocity() on a frozen body: applyImpulse
+/// returns before it), so velocities and momenta are as they were.
+template <int D>
+class FreezeGuard {
+ public:
+  explicit FreezeGuard(World<D>& world) : world_(world) {}
+  FreezeGuard(const FreezeGuard&) = delete;
+  FreezeGuard& operator=(const FreezeGuard&) = delete;
+  ~FreezeGuard() { releaseAll(); }
+
+  /// Freeze body i; a static or already frozen body is left as it is. Returns true if it
+  /// was frozen by this call.
+  bool freeze(int i) {
+    RigidBody<D>& body = world_.bodies.at(static_cast<std::size_t>(i));
+    if (body.isStatic()) return false;
+    saved_.push_back(Saved{i, body.inverseMass, body.inverseInertia});
+    body.inverseMass = 0.0;
+    body.inverseInertia.setZero();
+    return true;
+  }
+
+  /// Restore every frozen body, last frozen first. Called by the destructor.
+  void releaseAll() noexcept {
+    for (auto it = saved_.rbegin(); it != saved_.rend(); ++it) {
+      RigidBody<D>& body = world_.bodies[static_cast<std::size_t>(it->body)];
+      body.inverseMass = it->inverseMass;
+      body.inverseInertia = it->inverseInertia;
+    }
+    saved_.clear();
+  }
+
+  /// Bodies frozen now.
+  std::size_t frozenCount() const { return saved_.size(); }
+
+ private:
+  struct Saved {
+    int body;
+    double inverseMass;
+    AngVec<D> inverseInertia;
+  };
+  World<D>& world_;
+  std::vector<Saved> saved_;
+};
+// [freeze_guard]
+
+/// What one shock-propagation pass found (for the chapter's tables and the benchmark).
+struct ShockPassReport {
+  std::size_t bodies = 0;
+  std::size_t edges = 0;
+  std::size_t levels = 0;
+  std::size_t pairs = 0;
+  double graphSeconds = 0.0;  ///< building the graph and its levels
+};
+
+// [shock_pass]
+/// True if level l of `levels` is one body that rests on static bodies only and supports
+/// nothing (a box alone on the ground). The pass skips it: its supporters are infinitely
+/// heavy already, freezing it affects no other body, and its contacts were swept by the
+/// contact stage under the same rules, so the pass would only add contact sweeps.
+/// Ask before the pass freezes anything: a frozen supporter looks static too.
+template <int D>
+bool isolatedLevel(const World<D>& world, const ContactGraph& graph, const ContactLevels& levels,
+                   std::size_t l) {
+  const std::span<const int> bodies = levels.bodies(l);
+  if (bodies.size() != 1) return false;
+  const int b = bodies.front();
+  if (!graph.children(b).empty()) return false;
+  for (const int parent : graph.parents(b)) {
+    if (!world.bodies[static_cast<std::size_t>(parent)].isStatic()) return false;
+  }
+  return true;
+}
+
+/// One shock-propagation pass over `levels` (built from `graph`): for each level l bottom
+/// up, settings.shock.sweepsPerLevel sweeps over the level's pairs with restitution
+/// e_s = settings.shock.restitutionAt(s) (at most shock.pairIterations impulses per pair
+/// per sweep), then the level's bodies are frozen (Eq. (9.4)) for the levels above.
+/// Isolated levels (isolatedLevel()) are skipped. All freezes are released at the end,
+/// also on an exception. Work goes to `counters`. Loops: levels (L), sweeps (S), the
+/// level's pairs; resolvePair() caps its own loop.
+template <int D>
+void shockPropagationPass(World<D>& world, const ContactGraph& graph, const ContactLevels& levels,
+                          const StepSettings& settings, StageCounters& counters) {
+  const auto start = std::chrono::steady_clock::now();
+  const ShockSettings& shock = settings.shock;
+  StageSpec spec{Lookahead::Velocity, shock.sweepsPerLevel, shock.pairIterations,
+                 [&shock](int s, const PairMaterial&) { return shock.restitutionAt(s); }};
+  const Effects effects = resolveEffects<D>(world, settings.effects);
+  spec.friction = effects.friction;
+  spec.rollingFriction = effects.rollingFriction;
+  std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, settings.dt);
+  std::vector<char> isolated(levels.levelCount(), 0);  // decided before anything is frozen
+  for (std::size_t l = 0; l < levels.levelCount(); ++l) {
+    isolated[l] = isolatedLevel<D>(world, graph, levels, l) ? 1 : 0;
+  }
+  FreezeGuard<D> frozen(world);
+  std::vector<BodyPair> pairs;
+  for (std::size_t l = 0; l < levels.levelCount(); ++l) {  // bottom up, Eq. (9.1)
+    if (isolated[l] != 0) continue;
+    pairs.clear();
+    for (const ContactPair& c : levels.pairs(l)) pairs.push_back(BodyPair{c.below, c.above});  // Eq. (9.2)
+    for (int s = 1; s <= shock.sweepsPerLevel && !pairs.empty(); ++s) {
+      sweepPairs<D>(world, views, pairs, spec, s, settings.dt, settings, counters);
+    }
+    for (const int body : levels.bodies(l)) frozen.freeze(body);  // Eq. (9.4)
+  }
+  frozen.releaseAll();
+  counters.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+// [shock_pass]
+
+/// The contact graph settings a step uses: its dt, its detection settings, and loads only
+/// if the gravity effect runs.
+inline ContactGraphSettings stepGraphSettings(const StepSettings& settings, const Effects& effects) {
+  ContactGraphSettings g;
+  g.dt = settings.dt;
+  g.loads = effects.gravity;
+  g.narrow = settings.detection.narrow;
+  g.broad = settings.detection.broad;
+  return g;
+}
+
+// [approaching_contacts]
+/// The supporting contacts of `graph` that still approach faster than `minSpeed`: pairs
+/// with an interfering sample at the predicted poses x + dt v whose relative velocity has
+/// u_rel . N < -minSpeed (chapter 7's test, with a floor for round-off). After a pass over
+/// topological levels every contact was swept last with its lower body frozen; a layering
+/// that freezes a body before one of its supporters leaves contacts approaching.
+template <int D>
+std::size_t approachingContacts(const World<D>& world, const ContactGraph& graph, double dt,
+                                double minSpeed, const NarrowPhaseSettings& narrow = {}) {
+  const std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, dt);
+  std::size_t count = 0;
+  for (const ContactPair& c : graph.edges()) {  // bound: m
+    for (const InterferenceSample<D>& s : pairInterference<D>(views, BodyPair{c.below, c.above}, narrow)) {
+      if (normalRelativeVelocity<D>(s, views) < -minSpeed) {  // Eq. (7.5) with a floor
+        ++count;
+        break;
+      }
+    }
+  }
+  return count;
+}
+// [approaching_contacts]
+
+/// How shock propagation orders the bodies: GBF's topological levels of the condensed
+/// graph, or the BFS depth from parentless bodies (kept to show how it fails).
+enum class Layering { Topological, BfsDepth };
+
+// [shock_propagation]
+/// Shock propagation as a whole, run on the velocities the contact stage left:
+/// settings.shock.passes times, build the contact graph (Eq. (9.3)), its levels
+/// (topological, Eq. (9.1), unless `layering` asks for BFS depth) and run one pass
+/// (shockPropagationPass()). Returns what the last pass found; its work and time are
+/// added to `counters`.
+template <int D>
+ShockPassReport shockPropagation(World<D>& world, const StepSettings& settings, StageCounters& counters,
+                                 Layering layering = Layering::Topological) {
+  ShockPassReport report;
+  const Effects effects = resolveEffects<D>(world, settings.effects);
+  for (int pass = 0; pass < settings.shock.passes; ++pass) {
+    const auto start = std::chrono::steady_clock::now();
+    const ContactGraph graph =
+        worldContactGraph<D>(world, stepGraphSettings(settings, effects), &counters.detection);
+    const ContactLevels levels =
+        layering == Layering::Topological ? topologicalLevels(graph) : bfsDepthLevels(graph);
+    report.graphSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    counters.seconds += report.graphSeconds;
+    report.bodies = static_cast<std::size_t>(graph.bodyCount());
+    report.edges = graph.edgeCount();
+    report.levels = levels.levelCount();
+    report.pairs = levels.pairList.size();
+    shockPropagationPass<D>(world, graph, levels, settings, counters);
+  }
+  return report;
+}
+
+/// The post-contact hook of chapter 8's gbfStep() that runs shockPropagation() and puts
+/// its work in counters.shock.
+template <int D>
+PostContactHook<D> shockPropagationHook(Layering layering = Layering::Topological) {
+  return [layering](World<D>& world, const StepSettings& settings, StepCounters& counters) {
+    shockPropagation<D>(world, settings, counters.shock, layering);
+  };
+}
+
+/// GBF's step with shock propagation: gbfStep() with shockPropagationHook(). The pass runs
+/// when the shockPropagation effect does (inferred on for two or more dynamic bodies).
+template <int D>
+StepCounters stackingStep(World<D>& world, const StepSettings& settings,
+                          Layering layering = Layering::Topological) {
+  return gbfStep<D>(world, settings, shockPropagationHook<D>(layering));
+}
+// [shock_propagation]
+
+}  // namespace stackbook

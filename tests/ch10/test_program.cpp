@@ -1,0 +1,179 @@
+// Chapter 10: the stackbook program as a user runs it: exit codes, one error line on
+// stderr for bad input, the files a run writes, the list of bundled scenes, help.
+#include <doctest/doctest.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The built program: `stackbook` in the build tree, found by walking up from this test
+/// binary (the program is written to the top of the build folder).
+fs::path programPath() {
+  fs::path dir = fs::read_symlink("/proc/self/exe").parent_path();
+  for (; !dir.empty() && dir != dir.root_path(); dir = dir.parent_path()) {
+    const fs::path candidate = dir / "stackbook";
+    std::error_code ec;
+    if (fs::is_regular_file(candidate, ec)) return candidate;
+  }
+  return {};
+}
+
+struct Outcome {
+  int code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path scratch() {
+  const fs::path dir = fs::temp_directory_path() / "stackbook_ch10_program";
+  fs::create_directories(dir);
+  return dir;
+}
+
+/// Runs the program with `arguments` (shell syntax) in `workDir`.
+Outcome run(const std::string& arguments, const fs::path& workDir = scratch()) {
+  const fs::path program = programPath();
+  REQUIRE_MESSAGE(!program.empty(), "the stackbook program is not built (target stackbook_program)");
+  const fs::path out = scratch() / "stdout.txt", err = scratch() / "stderr.txt";
+  const std::string command = "cd '" + workDir.string() + "' && '" + program.string() + "' " + arguments + " >'" +
+                              out.string() + "' 2>'" + err.string() + "'";
+  const int status = std::system(command.c_str());
+  Outcome o;
+  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  o.out = slurp(out);
+  o.err = slurp(err);
+  return o;
+}
+
+long lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
+
+}  // namespace
+
+TEST_SUITE(STACKBOOK_CHAPTER) {
+
+TEST_CASE("stackbook check accepts a bundled scene by name") {
+  const Outcome o = run("check incline");
+  CHECK(o.code == 0);
+  CHECK(o.out.find("incline.json: ok (2D, 4 bodies") != std::string::npos);
+  CHECK(o.err.empty());
+}
+
+TEST_CASE("stackbook check of a bad scene exits 2 with one error line naming file and pointer") {
+  const std::string file = std::string(STACKBOOK_TEST_DATA_DIR) + "/bad_mesh_missing.json";
+  const Outcome o = run("check '" + file + "'");
+  CHECK(o.code == 2);
+  CHECK(lines(o.err) == 1);
+  CHECK(o.err.rfind("stackbook: error: " + file + ": /bodies/1/shape/file: no such mesh file", 0) == 0);
+}
+
+TEST_CASE("stackbook run of a missing scene exits 2 with one error line") {
+  const Outcome o = run("run no_such_scene");
+  CHECK(o.code == 2);
+  CHECK(lines(o.err) == 1);
+  CHECK(o.err.find("no_such_scene: no such scene file") != std::string::npos);
+}
+
+TEST_CASE("An unknown option exits 2 with one error line") {
+  const Outcome o = run("run incline --speed 3");
+  CHECK(o.code == 2);
+  CHECK(lines(o.err) == 1);
+  CHECK(o.err.find("--speed") != std::string::npos);
+}
+
+TEST_CASE("stackbook run writes the trajectory and the animation and the summary") {
+  const fs::path out = scratch() / "incline_run";
+  fs::remove_all(out);
+  const Outcome o = run("run incline --duration 0.02 --set output.frameRate=100 --quiet --out '" + out.string() + "'");
+  CHECK(o.code == 0);
+  CHECK(o.err.empty());
+  CHECK(fs::is_regular_file(out / "trajectory.csv"));
+  CHECK(fs::is_regular_file(out / "animation.svg"));
+  REQUIRE(fs::is_regular_file(out / "summary.json"));
+  const nlohmann::json s = nlohmann::json::parse(slurp(out / "summary.json"));
+  CHECK(s.at("steps") == 20);
+  CHECK(s.at("bodies") == 4);
+  CHECK(s.at("frames") == 3);  // t = 0, 0.01, 0.02
+  CHECK(s.at("files").size() == 3);
+  CHECK(s.at("effects") == nlohmann::json{"gravity", "collision", "contact", "friction"});
+  // trajectory.csv: a header and 3 frames of 4 bodies.
+  CHECK(lines(slurp(out / "trajectory.csv")) == 1 + 3 * 4);
+}
+
+TEST_CASE("stackbook run of a 3D scene writes the glTF animation and its viewer page") {
+  const fs::path out = scratch() / "stack3d_run";
+  fs::remove_all(out);
+  const Outcome o = run("run box_stack_3d --dt 0.002 --duration 0.01 --quiet --out '" + out.string() + "'");
+  CHECK(o.code == 0);
+  CHECK(fs::is_regular_file(out / "animation.glb"));
+  CHECK(fs::is_regular_file(out / "viewer.html"));
+  CHECK_FALSE(fs::exists(out / "animation.svg"));
+  const nlohmann::json s = nlohmann::json::parse(slurp(out / "summary.json"));
+  CHECK(s.at("steps") == 5);
+  CHECK(s.at("dt") == 0.002);
+  CHECK(s.at("files").size() == 4);
+}
+
+TEST_CASE("stackbook run prints the summary with effects and stages and energy and files") {
+  const fs::path out = scratch() / "balls_run";
+  const Outcome o = run("run bouncing_balls_2d --duration 0.01 --out '" + out.string() + "'");
+  CHECK(o.code == 0);
+  for (const char* part : {"5 bodies, 2D, 10 steps", "effects: gravity, collision, restitution", "collision",
+                           "contact", "shockPropagation", "max penetration", "energy (kinetic + potential)",
+                           "summary.json"}) {
+    CHECK_MESSAGE(o.out.find(part) != std::string::npos, part);
+  }
+}
+
+TEST_CASE("stackbook list names every bundled scene with its description") {
+  const Outcome o = run("list");
+  CHECK(o.code == 0);
+  for (const auto& entry : fs::directory_iterator(STACKBOOK_SCENES_DIR)) {
+    if (entry.path().extension() != ".json") continue;
+    CHECK_MESSAGE(o.out.find("  " + entry.path().stem().string() + " ") != std::string::npos, entry.path());
+  }
+  CHECK(o.out.find("Three blocks on a 30 degree incline") != std::string::npos);
+}
+
+TEST_CASE("Help is available for the program and every command") {
+  for (const char* args : {"--help", "run --help", "check --help", "list --help"}) {
+    const Outcome o = run(args);
+    CAPTURE(args);
+    CHECK(o.code == 0);
+    CHECK(o.out.find("Usage") != std::string::npos);
+  }
+  CHECK(run("run --help").out.find("--set") != std::string::npos);
+}
+
+}  // TEST_SUITE
+
+TEST_SUITE(STACKBOOK_CHAPTER "_slow") {
+
+TEST_CASE("stackbook without arguments runs the demo and says where its outputs are") {
+  const fs::path dir = scratch() / "demo";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const Outcome o = run("", dir);
+  CHECK(o.code == 0);
+  CHECK(o.out.find("The demo's outputs are in " + (dir / "stackbook-out").string()) != std::string::npos);
+  CHECK(fs::is_regular_file(dir / "stackbook-out" / "pyramid_2d" / "animation.svg"));
+}
+
+}  // TEST_SUITE

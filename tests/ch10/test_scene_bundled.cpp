@@ -1,0 +1,111 @@
+// Chapter 10: every bundled scene parses, says what it shows, and runs staying finite and
+// bounded without gaining energy. Full-size scenes (file names ending in "_full.json", e.g.
+// the pile of 1000 bodies) are demonstrations that take minutes: the tests and CI skip them,
+// and bench/scenes_bench runs them only when asked (--full).
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "stackbook/scene/scene.hpp"
+#include "stackbook/scene/simulation.hpp"
+
+using namespace stackbook;
+
+namespace {
+
+/// True for a full-size scene: its file name ends in "_full.json".
+bool isFullSize(const std::filesystem::path& path) {
+  const std::string name = path.filename().string();
+  const std::string suffix = "_full.json";
+  return name.size() >= suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+/// Every bundled scene except the full-size ones, sorted by file name.
+std::vector<std::filesystem::path> bundledScenes() {
+  std::vector<std::filesystem::path> out;
+  for (const auto& entry : std::filesystem::directory_iterator(STACKBOOK_SCENES_DIR)) {
+    if (entry.path().extension() == ".json" && !isFullSize(entry.path())) out.push_back(entry.path());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+/// Largest |coordinate| of any body at any recorded frame.
+double farthest(const SceneRun& run) {
+  return std::visit(
+      [](const auto& r) {
+        double far = 0.0;
+        for (const auto& frame : r.recording.poses()) {
+          for (const auto& pose : frame) far = std::max(far, pose.position.cwiseAbs().maxCoeff());
+        }
+        return far;
+      },
+      run);
+}
+
+/// Runs `steps` steps of every bundled scene and checks it stays finite, within 100 m of
+/// the origin, and gains no energy beyond 1e-3 of its magnitude.
+void runEveryScene(int steps) {
+  const std::vector<std::filesystem::path> scenes = bundledScenes();
+  REQUIRE(scenes.size() >= 4);
+  for (const auto& path : scenes) {
+    CAPTURE(path.string());
+    const Scene scene = loadScene(path.string());
+    RunOptions options;
+    options.duration = steps * scene.settings.dt;
+    const SceneRun run = runScene(scene, options);
+    const nlohmann::json summary = runSummaryJson(scene, run);
+    CHECK(summary.at("steps").get<int>() == steps);
+    CHECK(summary.at("finite").get<bool>());
+    CHECK(summary.at("quarantined").empty());
+    CHECK(farthest(run) < 100.0);
+    const double e0 = summary.at("energy").at("start").at("total").get<double>();
+    const double e1 = summary.at("energy").at("end").at("total").get<double>();
+    CHECK(e1 <= e0 + 1e-3 * std::max(1.0, std::abs(e0)));
+  }
+}
+
+}  // namespace
+
+TEST_SUITE(STACKBOOK_CHAPTER) {
+
+TEST_CASE("Every bundled scene parses and has a one-line description") {
+  for (const auto& path : bundledScenes()) {
+    CAPTURE(path.string());
+    const Scene scene = loadScene(path.string());
+    CHECK(scene.bodyCount() >= 2);
+    CHECK(scene.description.size() >= 20);
+    CHECK(scene.description.find('\n') == std::string::npos);
+  }
+}
+
+TEST_CASE("Every bundled scene runs three steps staying finite") { runEveryScene(3); }
+
+TEST_CASE("Full-size scenes are bundled and say in their description that CI skips them") {
+  int full = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(STACKBOOK_SCENES_DIR)) {
+    if (entry.path().extension() != ".json" || !isFullSize(entry.path())) continue;
+    CAPTURE(entry.path().string());
+    ++full;
+    // Read the JSON only: building 1000 bodies and their grids is the slow part.
+    const nlohmann::json doc = readSceneJson(entry.path().string());
+    const std::string description = doc.at("description").get<std::string>();
+    CHECK(description.find("not run by tests or CI") != std::string::npos);
+    CHECK(doc.at("bodies").is_array());
+  }
+  CHECK(full >= 1);
+}
+
+}  // TEST_SUITE
+
+TEST_SUITE(STACKBOOK_CHAPTER "_slow") {
+
+TEST_CASE("Every bundled scene runs 250 steps staying finite and bounded without energy gain") {
+  runEveryScene(250);
+}
+
+}  // TEST_SUITE
