@@ -42,7 +42,11 @@ bool isFullSize(const fs::path& path) {
 struct Options {
   bool full = false;
   double duration = 0.0;  // <= 0: each scene's own
+#ifdef STACKBOOK_SCENES_DIR
+  fs::path scenes = STACKBOOK_SCENES_DIR;
+#else
   fs::path scenes = fs::path(__FILE__).parent_path().parent_path() / "scenes";
+#endif
   std::vector<std::string> names;
 };
 

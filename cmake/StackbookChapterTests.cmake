@@ -17,6 +17,8 @@
 # compiled exercises.cpp with the solutions linked, registered as "chNN/solutions" (labels
 # solutions, chNN); the target stackbook_solutions builds them all. CI's solutions check
 # then reuses the main build instead of compiling the library a second time.
+# STACKBOOK_EXERCISE_BINARIES=OFF (the sanitize preset) builds no exercise binary at all:
+# the main build has already shown that the stubs and the solutions compile.
 if(NOT TARGET stackbook_exercises)
   add_custom_target(stackbook_exercises)
   add_custom_target(stackbook_solutions)
@@ -31,7 +33,7 @@ function(stackbook_add_chapter chapter)
   target_compile_definitions(${target} PRIVATE STACKBOOK_CHAPTER="${chapter}")
   doctest_discover_tests(${target} TEST_PREFIX "${chapter}/" ADD_LABELS 1)
 
-  if(ARG_EXERCISES)
+  if(ARG_EXERCISES AND STACKBOOK_EXERCISE_BINARIES)
     # exercises.cpp is compiled once and linked twice: with the stubs and the solutions.
     set(exercise_objects ${chapter}_exercise_tests)
     add_library(${exercise_objects} OBJECT ${CMAKE_CURRENT_SOURCE_DIR}/exercises.cpp)

@@ -236,4 +236,17 @@ std::vector<PairInterference<D>> detectInterference(const std::vector<CollisionB
 }
 // [detect_interference]
 
+// Compiled once, for D = 2 and 3, in the library (collision/instantiate_collision.cpp).
+#define STACKBOOK_EXTERN_NARROW_PHASE(D)                                                        \
+  extern template std::vector<InterferenceSample<D>> pairInterference<D>(                       \
+      const std::vector<CollisionBody<D>>&, const BodyPair&, const NarrowPhaseSettings&,        \
+      DetectionCounters*);                                                                      \
+  extern template std::optional<InterferenceSample<D>> deepestApproachingSample<D>(             \
+      const std::vector<InterferenceSample<D>>&, const std::vector<CollisionBody<D>>&);         \
+  extern template std::vector<PairInterference<D>> detectInterference<D>(                       \
+      const std::vector<CollisionBody<D>>&, const DetectionSettings&, DetectionCounters*);
+STACKBOOK_EXTERN_NARROW_PHASE(2)
+STACKBOOK_EXTERN_NARROW_PHASE(3)
+#undef STACKBOOK_EXTERN_NARROW_PHASE
+
 }  // namespace stackbook

@@ -276,4 +276,10 @@ ContactImpulse<D> frictionalImpulse(const Mat<D>& K, const Vec<D>& u, const Vec<
 }
 // [frictional_impulse_guards]
 
+// Compiled once, for D = 2 and 3, in the library (src/stackbook/instantiate_2d_3d.cpp).
+extern template ContactImpulse<2> frictionalImpulse<2>(const Mat<2>&, const Vec<2>&, const Vec<2>&,
+                                                       double, double, const FrictionSettings&);
+extern template ContactImpulse<3> frictionalImpulse<3>(const Mat<3>&, const Vec<3>&, const Vec<3>&,
+                                                       double, double, const FrictionSettings&);
+
 }  // namespace stackbook

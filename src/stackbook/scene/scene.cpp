@@ -692,14 +692,14 @@ void addBodies(const Reader& r, const json& body, const std::string& ptr,
     if (isStatic) {
       rigid = makeStaticBody<D>();
     } else {
-      const double scale = bodyMass / shape.measure;
+      const double scale = bodyMass / shape.measure;  // Eq. (10.1)
       try {
         rigid = makeDynamicBody<D>(bodyMass, AngVec<D>(scale * shape.unitMoments));
       } catch (const std::exception& e) {
         r.fail(ptr, e.what());
       }
     }
-    rigid.position = placement.toWorld(shape.frame.position);
+    rigid.position = placement.toWorld(shape.frame.position);  // Eq. (10.2)
     if constexpr (D == 2) {
       rigid.orientation = Eigen::Rotation2Dd(orientation.angle() + shape.frame.orientation.angle());
     } else {

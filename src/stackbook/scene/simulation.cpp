@@ -20,7 +20,7 @@ EnergyReport worldEnergy(const World<D>& world) {
   for (const RigidBody<D>& b : world.bodies) {
     if (b.isStatic()) continue;
     e.kinetic += b.kineticEnergy();
-    e.potential -= b.mass() * world.gravity.dot(b.position);  // U = -m g.x
+    e.potential -= b.mass() * world.gravity.dot(b.position);  // U = -m g.x, Eq. (10.4)
   }
   return e;
 }
@@ -86,7 +86,8 @@ RunResult<D> runBodies(const Scene& scene, const SceneBodies<D>& bodies, const R
   for (std::int64_t n = 1; n <= steps; ++n) {
     result.counters += step<D>(world, settings, hook);
     const double t = static_cast<double>(n) * settings.dt;
-    // Frames at multiples of 1/frameRate (the step that reaches each one), and the end.
+    // Frames at multiples of 1/frameRate (the step that reaches each one), and the end:
+    // Eq. (10.3).
     if (t + 1e-9 * settings.dt >= nextFrame || n == steps) {
       measure(t);
       while (nextFrame <= t + 1e-9 * settings.dt) nextFrame += frameInterval;

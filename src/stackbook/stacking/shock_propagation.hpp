@@ -279,4 +279,16 @@ StepCounters stackingStep(World<D>& world, const StepSettings& settings,
 }
 // [shock_propagation]
 
+// Compiled once, for D = 2 and 3, in the library (src/stackbook/instantiate_step.cpp): a
+// translation unit that includes this header links to those instead of compiling its own.
+#define STACKBOOK_EXTERN_SHOCK(D)                                                                 \
+  extern template ContactGraph worldContactGraph<D>(const World<D>&, const ContactGraphSettings&,  \
+                                                    DetectionCounters*);                           \
+  extern template ShockPassReport shockPropagation<D>(World<D>&, const StepSettings&,              \
+                                                      StageCounters&, Layering);                   \
+  extern template StepCounters stackingStep<D>(World<D>&, const StepSettings&, Layering);
+STACKBOOK_EXTERN_SHOCK(2)
+STACKBOOK_EXTERN_SHOCK(3)
+#undef STACKBOOK_EXTERN_SHOCK
+
 }  // namespace stackbook

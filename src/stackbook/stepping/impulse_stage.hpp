@@ -186,4 +186,20 @@ void runImpulseStage(World<D>& world, const StageSpec& spec, double dt,
 }
 // [impulse_stage]
 
+// Compiled once, for D = 2 and 3, in the library (src/stackbook/instantiate_step.cpp): a
+// translation unit that includes this header links to those instead of compiling its own.
+#define STACKBOOK_EXTERN_IMPULSE_STAGE(D)                                                  \
+  extern template int resolvePair<D>(World<D>&, std::vector<CollisionBody<D>>&, const BodyPair&, \
+                                     const StageSpec&, int, double, const StepSettings&,        \
+                                     StageCounters&);                                            \
+  extern template std::vector<CollisionBody<D>> stageViews<D>(const World<D>&, Lookahead, double); \
+  extern template int sweepPairs<D>(World<D>&, std::vector<CollisionBody<D>>&,                  \
+                                    const std::vector<BodyPair>&, const StageSpec&, int, double, \
+                                    const StepSettings&, StageCounters&);                       \
+  extern template void runImpulseStage<D>(World<D>&, const StageSpec&, double,                  \
+                                          const StepSettings&, StageCounters&);
+STACKBOOK_EXTERN_IMPULSE_STAGE(2)
+STACKBOOK_EXTERN_IMPULSE_STAGE(3)
+#undef STACKBOOK_EXTERN_IMPULSE_STAGE
+
 }  // namespace stackbook

@@ -74,4 +74,11 @@ StepCounters step(World<D>& world, const StepSettings& settings,
 }
 // [step]
 
+// Compiled once, for D = 2 and 3, in the library (src/stackbook/instantiate_step.cpp): a
+// translation unit that includes this header links to those instead of compiling its own.
+extern template StepCounters traditionalStep<2>(World<2>&, const StepSettings&,
+                                                const PostContactHook<2>&);
+extern template StepCounters traditionalStep<3>(World<3>&, const StepSettings&,
+                                                const PostContactHook<3>&);
+
 }  // namespace stackbook
