@@ -164,14 +164,15 @@ bool isolatedLevel(const World<D>& world, const ContactGraph& graph, const Conta
 /// Isolated levels (isolatedLevel()) are skipped. All freezes are released at the end,
 /// also on an exception. Work goes to `counters`. Loops: levels (L), sweeps (S), the
 /// level's pairs; resolvePair() caps its own loop.
+/// `effects` are the step's (resolveEffects()); the overload without them resolves them.
 template <int D>
 void shockPropagationPass(World<D>& world, const ContactGraph& graph, const ContactLevels& levels,
-                          const StepSettings& settings, StageCounters& counters) {
+                          const StepSettings& settings, const Effects& effects,
+                          StageCounters& counters) {
   const auto start = std::chrono::steady_clock::now();
   const ShockSettings& shock = settings.shock;
   StageSpec spec{Lookahead::Velocity, shock.sweepsPerLevel, shock.pairIterations,
                  [&shock](int s, const PairMaterial&) { return shock.restitutionAt(s); }};
-  const Effects effects = resolveEffects<D>(world, settings.effects);
   spec.friction = effects.friction;
   spec.rollingFriction = effects.rollingFriction;
   std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, settings.dt);
@@ -192,6 +193,13 @@ void shockPropagationPass(World<D>& world, const ContactGraph& graph, const Cont
   }
   frozen.releaseAll();
   counters.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+template <int D>
+void shockPropagationPass(World<D>& world, const ContactGraph& graph, const ContactLevels& levels,
+                          const StepSettings& settings, StageCounters& counters) {
+  shockPropagationPass<D>(world, graph, levels, settings, resolveEffects<D>(world, settings.effects),
+                          counters);
 }
 // [shock_pass]
 
@@ -256,7 +264,7 @@ ShockPassReport shockPropagation(World<D>& world, const StepSettings& settings, 
     report.edges = graph.edgeCount();
     report.levels = levels.levelCount();
     report.pairs = levels.pairList.size();
-    shockPropagationPass<D>(world, graph, levels, settings, counters);
+    shockPropagationPass<D>(world, graph, levels, settings, effects, counters);
   }
   return report;
 }
