@@ -181,6 +181,24 @@ TEST_CASE("B15: a 2D pyramid with a 20-box base holds its height with shock prop
 }
 // [b15_pyramid]
 
+// [b15_corner_threshold]
+TEST_CASE("B15: a 5-box-base pyramid creeps below the corner friction threshold and holds above it") {
+  // 15 boxes, 1 s, shock propagation on, GBF's deepest-sample rule. At mu = 0.8, above the
+  // 3/5 a square needs to stick at one corner (Eq. (9.7)), no box moves 5e-5 m; at
+  // mu = 0.5, below it, the corner impulses slide and some box creeps more than 1e-4 m.
+  double moved[2] = {0.0, 0.0};
+  const double mus[2] = {0.8, 0.5};
+  for (int k = 0; k < 2; ++k) {
+    const World<2> start = stacks::pyramid2d(5, Material{0.0, mus[k], 0.0});
+    World<2> world = start;
+    stacks::run<2>(world, StepSettings{}, 1.0, true);
+    moved[k] = largestDisplacement<2>(start, world);
+  }
+  CHECK(moved[0] < 5e-5);
+  CHECK(moved[1] > 1e-4);
+}
+// [b15_corner_threshold]
+
 TEST_CASE("B15 in 3D: a pyramid of 14 cubes stands") {
   const World<3> start = stacks::pyramid3d(3, Material{0.0, 0.5, 0.0});
   World<3> world = start;

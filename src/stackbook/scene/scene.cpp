@@ -770,7 +770,8 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
   const std::string p = "/solver";
   r.requireObject(solver, p,
                   {"collisionIterations", "collisionPairIterations", "contactIterations",
-                   "contactPairIterations", "contactRestitution", "shock", "order"},
+                   "contactPairIterations", "contactRestitution", "shock", "order", "impulsePoint",
+                   "impulsePointNormalCosine"},
                   "the solver settings");
   if (const json* v = member(solver, "collisionIterations")) s.collisionIterations = r.integer(*v, p + "/collisionIterations", 0, 1000);
   if (const json* v = member(solver, "collisionPairIterations")) s.collisionPairIterations = r.integer(*v, p + "/collisionPairIterations", 1, 1000);
@@ -785,6 +786,20 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
     } else {
       r.fail(p + "/order", "must be \"gbf\" or \"traditional\", got \"" + order + "\"");
     }
+  }
+  if (const json* v = member(solver, "impulsePoint")) {
+    const std::string rule = r.string(*v, p + "/impulsePoint");
+    if (rule == "deepest") {
+      s.impulsePoint.rule = ImpulsePointRule::Deepest;
+    } else if (rule == "centre") {
+      s.impulsePoint.rule = ImpulsePointRule::DepthWeightedCentre;
+    } else {
+      r.fail(p + "/impulsePoint", "must be \"deepest\" or \"centre\", got \"" + rule + "\"");
+    }
+  }
+  if (const json* v = member(solver, "impulsePointNormalCosine")) {
+    s.impulsePoint.normalCosine = r.inRange(*v, p + "/impulsePointNormalCosine", 0.0, 1.0);
+    if (!(s.impulsePoint.normalCosine > 0.0)) r.fail(p + "/impulsePointNormalCosine", "must be > 0, got 0");
   }
   const auto schedule = [&](const json& v, const std::string& ptr, std::size_t count, const char* countName) {
     if (!v.is_array()) r.fail(ptr, "expected an array of numbers in [-1, 0], got " + describeValue(v));

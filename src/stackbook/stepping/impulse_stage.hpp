@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "stackbook/body/integrate.hpp"
+#include "stackbook/collision/impulse_point.hpp"
 #include "stackbook/collision/narrow_phase.hpp"
 #include "stackbook/impulse/collision_matrix.hpp"
 #include "stackbook/impulse/frictional_impulse.hpp"
@@ -68,7 +69,8 @@ struct StageSpec {
 
 // [pair_impulse]
 /// The impulse loop for one pair: at most spec.pairIterations times, detect interference
-/// at the tested poses (views), take the deepest approaching sample (chapter 7), and apply
+/// at the tested poses (views), take the deepest approaching sample (chapter 7) or the
+/// centre of the samples that share its normal (settings.impulsePoint), and apply
 /// the frictional impulse of chapter 3 to the bodies' current velocities; then re-predict
 /// the two bodies so the next detection sees the effect. Returns the number of impulses.
 ///
@@ -88,9 +90,10 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
   for (int iteration = 0; iteration < spec.pairIterations; ++iteration) {
     const std::vector<InterferenceSample<D>> samples =
         pairInterference<D>(views, pair, settings.detection.narrow, &counters.detection);
-    const std::optional<InterferenceSample<D>> deepest = deepestApproachingSample<D>(samples, views);
-    if (!deepest) return applied;
-    const InterferenceSample<D>& s = *deepest;
+    const std::optional<InterferenceSample<D>> point =
+        impulsePoint<D>(samples, views, settings.impulsePoint);  // Eqs. (7.6), (8.10)
+    if (!point) return applied;
+    const InterferenceSample<D>& s = *point;
     RigidBody<D>& owner = world.bodies[static_cast<std::size_t>(s.owner)];
     RigidBody<D>& other = world.bodies[static_cast<std::size_t>(s.other)];
     const Vec<D> rOwner = s.point - views[static_cast<std::size_t>(s.owner)].pose.position;  // Eq. (8.3)

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "stackbook/collision/impulse_point.hpp"
 #include "stackbook/collision/narrow_phase.hpp"
 #include "stackbook/impulse/friction_settings.hpp"
 #include "stackbook/stepping/effects.hpp"
@@ -91,6 +92,9 @@ struct StepSettings {
   FrictionSettings friction = gbfFrictionSettings();
   /// Broad- and narrow-phase settings (chapter 7).
   DetectionSettings detection;
+  /// Where each impulse of a pair acts: GBF's deepest approaching sample (the default), or
+  /// the depth-weighted centre of the approaching samples that share its normal (Eq. (8.10)).
+  ImpulsePointSettings impulsePoint;
   /// GBF's order or the traditional one.
   StepOrder order = StepOrder::Gbf;
   /// Overrides of the effects inferred from the scene (effects.hpp); empty: infer all.
@@ -150,6 +154,7 @@ inline void validateStepSettings(const StepSettings& s, const char* caller = "va
   if (!msg.str().empty()) {
     throw std::invalid_argument(std::string(caller) + ": settings." + msg.str());
   }
+  validateImpulsePointSettings(s.impulsePoint, caller);
 }
 
 }  // namespace stackbook

@@ -1,0 +1,82 @@
+#pragma once
+/// \file
+/// \brief Where one impulse of a pair acts (\ref ch08, "Where the impulse acts",
+/// Eqs. (8.10)-(8.12)): GBF's deepest approaching sample, or the depth-weighted centre of
+/// the approaching samples that share its normal.
+
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "stackbook/collision/narrow_phase.hpp"
+
+namespace stackbook {
+
+// [impulse_point_settings]
+/// The rule that picks the point an impulse of a pair acts at.
+enum class ImpulsePointRule {
+  /// GBF: the deepest approaching sample (Eq. (7.6)). Two samples of equal depth (a box
+  /// flat on a face) are split by round-off and taken one after the other.
+  Deepest,
+  /// The depth-weighted centre of the approaching samples whose normal is within
+  /// `normalCosine` of the deepest one's (Eq. (8.10)): one sample gives GBF's point, a
+  /// flat face gives its middle, a tilting face leans to its deep side continuously.
+  DepthWeightedCentre,
+};
+
+struct ImpulsePointSettings {
+  ImpulsePointRule rule = ImpulsePointRule::Deepest;
+  /// A sample joins the centre when its normal n_i (turned to the deepest sample's
+  /// owner) has n_i . n >= normalCosine (in (0, 1]; 0.99 is 8.1 degrees). Faces of a
+  /// nonconvex body that meet at a sharper angle get their own impulses.
+  double normalCosine = 0.99;
+};
+// [impulse_point_settings]
+
+/// Throws std::invalid_argument unless normalCosine is in (0, 1].
+inline void validateImpulsePointSettings(const ImpulsePointSettings& s, const char* caller) {
+  if (s.normalCosine > 0.0 && s.normalCosine <= 1.0) return;
+  std::ostringstream msg;
+  msg << caller << ": settings.impulsePoint.normalCosine must be in (0, 1], got " << s.normalCosine;
+  throw std::invalid_argument(msg.str());
+}
+
+// [impulse_point]
+/// The sample one impulse of the pair acts at, or empty when no sample approaches.
+/// Deepest: deepestApproachingSample(). DepthWeightedCentre: with n the deepest
+/// approaching sample's normal, the centre p = sum w_i p_i / sum w_i over the approaching
+/// samples i whose normal, turned to the deepest sample's owner, lies within
+/// normalCosine of n, with weights w_i = -phi_i, the depth (Eq. (8.10)). The result keeps
+/// the deepest sample's owner, normal and depth; its sampleIndex is -1 when it is a
+/// centre of several. The relative velocity is affine in the point, so the centre of
+/// approaching samples approaches along n unless their normals differ (Eq. (8.11)); if it
+/// does not, the deepest sample is returned.
+template <int D>
+std::optional<InterferenceSample<D>> impulsePoint(const std::vector<InterferenceSample<D>>& samples,
+                                                  const std::vector<CollisionBody<D>>& bodies,
+                                                  const ImpulsePointSettings& settings) {
+  const std::optional<InterferenceSample<D>> deepest = deepestApproachingSample<D>(samples, bodies);
+  if (!deepest || settings.rule == ImpulsePointRule::Deepest) return deepest;
+  Vec<D> weighted = Vec<D>::Zero();
+  double total = 0.0;
+  int members = 0;
+  for (const InterferenceSample<D>& s : samples) {
+    const double sign = s.owner == deepest->owner ? 1.0 : -1.0;  // turn to the deepest's owner
+    if (sign * s.normal.dot(deepest->normal) < settings.normalCosine) continue;
+    if (!(normalRelativeVelocity<D>(s, bodies) < 0.0)) continue;  // Eq. (7.5)
+    const double w = -s.depth;
+    weighted += w * s.point;
+    total += w;
+    ++members;
+  }
+  if (members < 2 || !(total > 0.0)) return deepest;
+  InterferenceSample<D> centre = *deepest;
+  centre.point = weighted / total;  // Eq. (8.10)
+  centre.sampleIndex = -1;
+  if (!(normalRelativeVelocity<D>(centre, bodies) < 0.0)) return deepest;  // Eq. (8.11)
+  return centre;
+}
+// [impulse_point]
+
+}  // namespace stackbook
