@@ -27,7 +27,7 @@ namespace stackbook {
   template ContactGraph worldContactGraph<D>(const World<D>&, const ContactGraphSettings&,     \
                                              DetectionCounters*);                              \
   template ShockPassReport shockPropagation<D>(World<D>&, const StepSettings&, StageCounters&, \
-                                               Layering);                                      \
+                                               Layering, ContactLedger*);                      \
   template StepCounters stackingStep<D>(World<D>&, const StepSettings&, Layering);
 
 STACKBOOK_INSTANTIATE_STEP(2)

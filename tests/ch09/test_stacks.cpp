@@ -199,6 +199,32 @@ TEST_CASE("B15: a 5-box-base pyramid creeps below the corner friction threshold 
 }
 // [b15_corner_threshold]
 
+// [b15_step_cone]
+TEST_CASE("B15 and A17 under one cone per step: the 5-box-base pyramid holds at mu 0.5 and the cards keep their threshold") {
+  // Eq. (8.13): with the pair's total impulse of the step in the cone, the corner impulses
+  // of a resting box may stick although each alone needs 3/5: the pyramid that creeps
+  // more than 1e-4 m in 1 s under GBF's cone moves less than 2e-5 m. The rule is still
+  // Coulomb's: the A-frame stands above mu_req = 0.2332 (at 0.25) and falls below it (0.22).
+  StepSettings settings;
+  settings.frictionCone = FrictionConeRule::StepTotal;
+  const World<2> start = stacks::pyramid2d(5, Material{0.0, 0.5, 0.0});
+  World<2> pyramid = start;
+  stacks::run<2>(pyramid, settings, 1.0, true);
+  CHECK(largestDisplacement<2>(start, pyramid) < 2e-5);
+
+  const double beta = 25.0 * M_PI / 180.0;
+  World<2> stands = stacks::cardFrame(beta, Material{0.0, 0.25, 0.0});
+  World<2> falls = stacks::cardFrame(beta, Material{0.0, 0.22, 0.0});
+  const World<2> frame = stands;
+  stacks::run<2>(stands, settings, 2.0, true);
+  stacks::run<2>(falls, settings, 2.0, true);
+  for (const std::size_t card : {std::size_t{1}, std::size_t{2}}) {
+    CHECK((stands.bodies[card].position - frame.bodies[card].position).norm() < 1e-3);
+    CHECK(falls.bodies[card].position.y() < 0.5 * frame.bodies[card].position.y());
+  }
+}
+// [b15_step_cone]
+
 TEST_CASE("B15 in 3D: a pyramid of 14 cubes stands") {
   const World<3> start = stacks::pyramid3d(3, Material{0.0, 0.5, 0.0});
   World<3> world = start;

@@ -85,6 +85,8 @@ const std::vector<BadCase>& badCases() {
        "/solver/contactRestitution/1", "must be in [-1, 0], got 0.5"},
       {"unknown impulse point", R"({"solver": {"impulsePoint": "middle"}})", "/solver/impulsePoint",
        "must be \"deepest\" or \"centre\", got \"middle\""},
+      {"unknown friction cone", R"({"solver": {"frictionCone": "pair"}})", "/solver/frictionCone",
+       "must be \"impulse\" or \"step\", got \"pair\""},
       {"zero normal cosine", R"({"solver": {"impulsePointNormalCosine": 0}})",
        "/solver/impulsePointNormalCosine", "must be > 0, got 0"},
       {"static body with a mass",

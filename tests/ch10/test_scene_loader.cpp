@@ -244,7 +244,7 @@ TEST_CASE("Solver and effect settings reach the step settings") {
   const json doc = json::parse(R"({"dimension": 2, "dt": 0.0005,
     "solver": {"collisionIterations": 3, "contactIterations": 2, "contactRestitution": [-0.4, 0],
                "shock": {"sweepsPerLevel": 3, "pairIterations": 7}, "order": "traditional",
-               "impulsePoint": "centre", "impulsePointNormalCosine": 0.9},
+               "impulsePoint": "centre", "impulsePointNormalCosine": 0.9, "frictionCone": "step"},
     "effects": {"friction": false, "shockPropagation": true},
     "bodies": [{"shape": {"type": "disk", "radius": 1}}]})");
   const Scene s = parseScene(doc, "s.json", ".");
@@ -256,6 +256,7 @@ TEST_CASE("Solver and effect settings reach the step settings") {
   CHECK(s.settings.order == StepOrder::Traditional);
   CHECK(s.settings.impulsePoint.rule == ImpulsePointRule::DepthWeightedCentre);
   CHECK(s.settings.impulsePoint.normalCosine == 0.9);
+  CHECK(s.settings.frictionCone == FrictionConeRule::StepTotal);
   REQUIRE(s.settings.effects.friction.has_value());
   CHECK(*s.settings.effects.friction == false);
   CHECK(*s.settings.effects.shockPropagation == true);

@@ -771,31 +771,32 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
   r.requireObject(solver, p,
                   {"collisionIterations", "collisionPairIterations", "contactIterations",
                    "contactPairIterations", "contactRestitution", "shock", "order", "impulsePoint",
-                   "impulsePointNormalCosine"},
+                   "impulsePointNormalCosine", "frictionCone"},
                   "the solver settings");
   if (const json* v = member(solver, "collisionIterations")) s.collisionIterations = r.integer(*v, p + "/collisionIterations", 0, 1000);
   if (const json* v = member(solver, "collisionPairIterations")) s.collisionPairIterations = r.integer(*v, p + "/collisionPairIterations", 1, 1000);
   if (const json* v = member(solver, "contactIterations")) s.contactIterations = r.integer(*v, p + "/contactIterations", 0, 1000);
   if (const json* v = member(solver, "contactPairIterations")) s.contactPairIterations = r.integer(*v, p + "/contactPairIterations", 1, 1000);
-  if (const json* v = member(solver, "order")) {
-    const std::string order = r.string(*v, p + "/order");
-    if (order == "gbf") {
-      s.order = StepOrder::Gbf;
-    } else if (order == "traditional") {
-      s.order = StepOrder::Traditional;
-    } else {
-      r.fail(p + "/order", "must be \"gbf\" or \"traditional\", got \"" + order + "\"");
+  // A field that names one of two choices: "must be \"a\" or \"b\", got \"c\"" otherwise.
+  const auto choose = [&](const char* field, const char* a, auto valueA, const char* b, auto valueB) {
+    const std::string ptr = p + "/" + field;
+    const std::string word = r.string(*member(solver, field), ptr);
+    if (word == a) return valueA;
+    if (word != b) {
+      r.fail(ptr, "must be \"" + std::string(a) + "\" or \"" + b + "\", got \"" + word + "\"");
     }
+    return valueB;
+  };
+  if (member(solver, "order")) {
+    s.order = choose("order", "gbf", StepOrder::Gbf, "traditional", StepOrder::Traditional);
   }
-  if (const json* v = member(solver, "impulsePoint")) {
-    const std::string rule = r.string(*v, p + "/impulsePoint");
-    if (rule == "deepest") {
-      s.impulsePoint.rule = ImpulsePointRule::Deepest;
-    } else if (rule == "centre") {
-      s.impulsePoint.rule = ImpulsePointRule::DepthWeightedCentre;
-    } else {
-      r.fail(p + "/impulsePoint", "must be \"deepest\" or \"centre\", got \"" + rule + "\"");
-    }
+  if (member(solver, "impulsePoint")) {
+    s.impulsePoint.rule = choose("impulsePoint", "deepest", ImpulsePointRule::Deepest, "centre",
+                                 ImpulsePointRule::DepthWeightedCentre);
+  }
+  if (member(solver, "frictionCone")) {
+    s.frictionCone = choose("frictionCone", "impulse", FrictionConeRule::EachImpulse, "step",
+                            FrictionConeRule::StepTotal);
   }
   if (const json* v = member(solver, "impulsePointNormalCosine")) {
     s.impulsePoint.normalCosine = r.inRange(*v, p + "/impulsePointNormalCosine", 0.0, 1.0);

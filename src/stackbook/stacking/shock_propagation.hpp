@@ -168,13 +168,14 @@ bool isolatedLevel(const World<D>& world, const ContactGraph& graph, const Conta
 template <int D>
 void shockPropagationPass(World<D>& world, const ContactGraph& graph, const ContactLevels& levels,
                           const StepSettings& settings, const Effects& effects,
-                          StageCounters& counters) {
+                          StageCounters& counters, ContactLedger* ledger = nullptr) {
   const auto start = std::chrono::steady_clock::now();
   const ShockSettings& shock = settings.shock;
   StageSpec spec{Lookahead::Velocity, shock.sweepsPerLevel, shock.pairIterations,
                  [&shock](int s, const PairMaterial&) { return shock.restitutionAt(s); }};
   spec.friction = effects.friction;
   spec.rollingFriction = effects.rollingFriction;
+  spec.ledger = ledger;  // the step's ledger under FrictionConeRule::StepTotal (Eq. (8.13))
   std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, settings.dt);
   std::vector<char> isolated(levels.levelCount(), 0);  // decided before anything is frozen
   for (std::size_t l = 0; l < levels.levelCount(); ++l) {
@@ -249,7 +250,8 @@ enum class Layering { Topological, BfsDepth };
 /// added to `counters`.
 template <int D>
 ShockPassReport shockPropagation(World<D>& world, const StepSettings& settings, StageCounters& counters,
-                                 Layering layering = Layering::Topological) {
+                                 Layering layering = Layering::Topological,
+                                 ContactLedger* ledger = nullptr) {
   ShockPassReport report;
   const Effects effects = resolveEffects<D>(world, settings.effects);
   for (int pass = 0; pass < settings.shock.passes; ++pass) {
@@ -264,7 +266,7 @@ ShockPassReport shockPropagation(World<D>& world, const StepSettings& settings, 
     report.edges = graph.edgeCount();
     report.levels = levels.levelCount();
     report.pairs = levels.pairList.size();
-    shockPropagationPass<D>(world, graph, levels, settings, effects, counters);
+    shockPropagationPass<D>(world, graph, levels, settings, effects, counters, ledger);
   }
   return report;
 }
@@ -274,7 +276,9 @@ ShockPassReport shockPropagation(World<D>& world, const StepSettings& settings, 
 template <int D>
 PostContactHook<D> shockPropagationHook(Layering layering = Layering::Topological) {
   return [layering](World<D>& world, const StepSettings& settings, StepCounters& counters) {
-    shockPropagation<D>(world, settings, counters.shock, layering);
+    ContactLedger* ledger =
+        settings.frictionCone == FrictionConeRule::StepTotal ? &counters.contactLedger : nullptr;
+    shockPropagation<D>(world, settings, counters.shock, layering, ledger);
   };
 }
 
@@ -293,7 +297,7 @@ StepCounters stackingStep(World<D>& world, const StepSettings& settings,
   extern template ContactGraph worldContactGraph<D>(const World<D>&, const ContactGraphSettings&,  \
                                                     DetectionCounters*);                           \
   extern template ShockPassReport shockPropagation<D>(World<D>&, const StepSettings&,              \
-                                                      StageCounters&, Layering);                   \
+                                                      StageCounters&, Layering, ContactLedger*);   \
   extern template StepCounters stackingStep<D>(World<D>&, const StepSettings&, Layering);
 STACKBOOK_EXTERN_SHOCK(2)
 STACKBOOK_EXTERN_SHOCK(3)

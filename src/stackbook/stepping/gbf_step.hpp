@@ -159,8 +159,9 @@ StepCounters gbfStep(World<D>& world, const StepSettings& settings,
 
   // (3) Contact: where the new velocities would carry the bodies, restitution ramp.
   if (effects.contact) {
-    runImpulseStage<D>(world, contactStageSpec(settings, effects, Lookahead::Velocity), dt,
-                       settings, counters.contact);
+    StageSpec contact = contactStageSpec(settings, effects, Lookahead::Velocity);
+    if (settings.frictionCone == FrictionConeRule::StepTotal) contact.ledger = &counters.contactLedger;
+    runImpulseStage<D>(world, contact, dt, settings, counters.contact);
   }
 
   // (4) Hook for shock propagation (chapter 9), if that effect runs.

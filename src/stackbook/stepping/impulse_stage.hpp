@@ -18,6 +18,7 @@
 #include "stackbook/impulse/collision_matrix.hpp"
 #include "stackbook/impulse/frictional_impulse.hpp"
 #include "stackbook/impulse/rolling_friction.hpp"
+#include "stackbook/stepping/contact_ledger.hpp"
 #include "stackbook/stepping/step_counters.hpp"
 #include "stackbook/stepping/step_settings.hpp"
 #include "stackbook/stepping/world.hpp"
@@ -49,6 +50,11 @@ Pose<D> testedPose(const World<D>& world, int i, Lookahead lookahead, double dt)
   return poseOf<D>(body);
 }
 
+/// The friction coefficient with which the step-total rule (Eq. (8.13)) asks chapter 3
+/// for its sticking trial: large enough that the per-impulse cone test never rejects a
+/// trial with j_n > 0, finite so that chapter 3's input check and guards apply unchanged.
+inline constexpr double kUnboundedTrialFriction = 1e6;
+
 // [stage_spec]
 /// What distinguishes one impulse stage from another.
 struct StageSpec {
@@ -64,6 +70,9 @@ struct StageSpec {
   /// The rolling-friction effect (Eq. (8.7)): after a sticking impulse, damp the relative
   /// rolling and spinning by the pair's rolling coefficient.
   bool rollingFriction = false;
+  /// The step's contact ledger under FrictionConeRule::StepTotal (Eq. (8.13)); nullptr:
+  /// GBF's cone on each impulse alone.
+  ContactLedger* ledger = nullptr;
 };
 // [stage_spec]
 
@@ -106,11 +115,27 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
     if (spec.friction) {
       ++counters.frictionEvaluations;
       impulse = frictionalImpulse<D>(K, u, s.normal, e, material.friction, settings.friction);
+      // [pair_step_cone]
+      // One cone per step (Eq. (8.13)): a sticking trial this impulse alone would reject is
+      // taken when the pair's total impulse of the step stays inside the cone. The trial is
+      // chapter 3's, with its energy guard; only the per-impulse cone test is lifted.
+      if (spec.ledger != nullptr && impulse.branch == ImpulseBranch::Sliding) {
+        const ContactImpulse<D> trial = frictionalImpulse<D>(
+            K, u, s.normal, e, kUnboundedTrialFriction, settings.friction);
+        if (trial.branch == ImpulseBranch::Sticking &&
+            spec.ledger->admits<D>(pair, s.owner, trial.j, s.normal, material.friction)) {
+          impulse = trial;
+          impulse.friction = material.friction;
+          ++counters.stepConeSticks;
+        }
+      }
+      // [pair_step_cone]
     } else {
       impulse = frictionlessImpulse<D>(K, u, s.normal, e, settings.friction.pivotTolerance);
     }
     if (impulse.j.isZero(0.0)) return applied;  // immovable or no response: nothing to iterate
     applyPairImpulse<D>(owner, rOwner, other, rOther, impulse.j);  // +j owner, -j other
+    if (spec.ledger != nullptr) spec.ledger->record<D>(pair, s.owner, impulse.j, s.normal);
     counters.countImpulse(impulse.branch);
     if (impulse.restitution > 0.0) ++counters.elasticImpulses;
     // [pair_rolling]

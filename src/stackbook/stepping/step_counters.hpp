@@ -11,6 +11,7 @@
 
 #include "stackbook/collision/detection_counters.hpp"
 #include "stackbook/impulse/contact_impulse.hpp"
+#include "stackbook/stepping/contact_ledger.hpp"
 #include "stackbook/stepping/effects.hpp"
 
 namespace stackbook {
@@ -28,6 +29,7 @@ struct StageCounters {
   std::int64_t frictionEvaluations = 0;   ///< calls of the frictional impulse (friction effect on)
   std::int64_t elasticImpulses = 0;       ///< impulses applied with e > 0 (restitution effect on)
   std::int64_t rollingImpulses = 0;       ///< rolling/spinning friction impulses applied
+  std::int64_t stepConeSticks = 0;        ///< of the sticking ones: admitted by the step's cone only
   DetectionCounters detection;       ///< broad and narrow phase work
   double seconds = 0.0;              ///< wall time (std::chrono::steady_clock)
 
@@ -50,6 +52,7 @@ struct StageCounters {
     frictionEvaluations += o.frictionEvaluations;
     elasticImpulses += o.elasticImpulses;
     rollingImpulses += o.rollingImpulses;
+    stepConeSticks += o.stepConeSticks;
     detection += o.detection;
     seconds += o.seconds;
     return *this;
@@ -60,7 +63,8 @@ struct StageCounters {
     std::ostringstream out;
     out << sweeps << " sweeps, " << pairVisits << " pair visits, " << impulses << " impulses ("
         << frictionless << " frictionless, " << sticking << " sticking, " << sliding
-        << " sliding, " << elasticImpulses << " elastic, " << rollingImpulses << " rolling), "
+        << " sliding, " << elasticImpulses << " elastic, " << rollingImpulses << " rolling, "
+        << stepConeSticks << " sticking by the step's cone), "
         << frictionEvaluations << " friction evaluations, " << pairIterationCapHits
         << " pair caps hit, " << seconds * 1e3
         << " ms; " << detection.summary();
@@ -95,6 +99,10 @@ struct StepCounters {
   double totalSeconds = 0.0;
   /// Bodies quarantined (for several steps: all of them, in order).
   std::vector<Quarantine> quarantined;
+  /// Under FrictionConeRule::StepTotal, the total impulse each pair exchanged in this
+  /// step's contact stage and pass (Eq. (8.13)); empty otherwise. Per step: += does not
+  /// add ledgers up.
+  ContactLedger contactLedger;
 
   StepCounters& operator+=(const StepCounters& o) {
     quarantined.insert(quarantined.end(), o.quarantined.begin(), o.quarantined.end());

@@ -12,6 +12,7 @@
 #include "stackbook/collision/impulse_point.hpp"
 #include "stackbook/collision/narrow_phase.hpp"
 #include "stackbook/impulse/friction_settings.hpp"
+#include "stackbook/stepping/contact_ledger.hpp"
 #include "stackbook/stepping/effects.hpp"
 
 namespace stackbook {
@@ -95,6 +96,9 @@ struct StepSettings {
   /// Where each impulse of a pair acts: GBF's deepest approaching sample (the default), or
   /// the depth-weighted centre of the approaching samples that share its normal (Eq. (8.10)).
   ImpulsePointSettings impulsePoint;
+  /// Which impulse Coulomb's cone bounds in the contact stage and the shock pass: each
+  /// impulse alone (GBF, the default) or the pair's total over the step (Eq. (8.13)).
+  FrictionConeRule frictionCone = FrictionConeRule::EachImpulse;
   /// GBF's order or the traditional one.
   StepOrder order = StepOrder::Gbf;
   /// Overrides of the effects inferred from the scene (effects.hpp); empty: infer all.

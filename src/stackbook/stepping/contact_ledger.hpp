@@ -1,0 +1,89 @@
+#pragma once
+/// \file
+/// \brief The step's contact ledger: the total impulse each touching pair has exchanged
+/// in the contact stage and the shock-propagation pass of one step, and the Coulomb cone
+/// applied to that total (\ref ch08, "One cone per step", Eqs. (8.13)-(8.14)).
+
+#include <array>
+#include <cstddef>
+#include <map>
+#include <utility>
+
+#include "stackbook/collision/broad_phase.hpp"
+#include "stackbook/math/types.hpp"
+
+namespace stackbook {
+
+// [friction_cone_rule]
+/// Which impulse Coulomb's cone bounds in the contact stage and the pass.
+enum class FrictionConeRule {
+  /// GBF: every impulse on its own, |j_t| <= mu j_n (Eq. (3.3)).
+  EachImpulse,
+  /// The pair's total contact impulse over the step (Eq. (8.13)): a sticking trial that
+  /// one impulse alone would reject is taken when the total stays in the cone.
+  StepTotal,
+};
+// [friction_cone_rule]
+
+// [contact_ledger]
+/// Per pair, the sum of the impulses applied to its lower-numbered body: the normal part
+/// N = sum j . n and the tangential part T = sum (j - (j . n) n), D <= 3 components.
+class ContactLedger {
+ public:
+  struct Total {
+    double normal = 0.0;
+    std::array<double, 3> tangential{0.0, 0.0, 0.0};
+  };
+
+  /// Would adding impulse j on `owner` (along the owner's unit normal n) keep the pair's
+  /// total in the cone of mu? Requires j . n > 0 (never a pulling impulse) and
+  /// |P (T + j_t)| <= mu (N + j . n), P the projection on the plane normal to n (Eq. (8.13)).
+  template <int D>
+  bool admits(const BodyPair& pair, int owner, const Vec<D>& j, const Vec<D>& n, double mu) const {
+    const double jn = j.dot(n);
+    if (!(jn > 0.0)) return false;
+    const auto [key, sign] = keyOf(pair, owner);
+    Vec<D> t = sign * (j - jn * n);
+    double normal = jn;
+    if (const auto it = totals_.find(key); it != totals_.end()) {
+      for (int k = 0; k < D; ++k) t[k] += it->second.tangential[static_cast<std::size_t>(k)];
+      normal += it->second.normal;
+    }
+    t -= t.dot(n) * n;
+    return t.norm() <= mu * normal;  // Eq. (8.13)
+  }
+
+  /// Add impulse j on `owner`, along the owner's unit normal n, to the pair's total.
+  template <int D>
+  void record(const BodyPair& pair, int owner, const Vec<D>& j, const Vec<D>& n) {
+    const auto [key, sign] = keyOf(pair, owner);
+    Total& total = totals_[key];
+    const double jn = j.dot(n);
+    const Vec<D> t = sign * (j - jn * n);
+    total.normal += jn;
+    for (int k = 0; k < D; ++k) total.tangential[static_cast<std::size_t>(k)] += t[k];
+  }
+
+  /// The pair's total, or nullptr if it exchanged no impulse.
+  const Total* find(const BodyPair& pair) const {
+    const auto it = totals_.find(ordered(pair));
+    return it == totals_.end() ? nullptr : &it->second;
+  }
+  std::size_t size() const { return totals_.size(); }
+  void clear() { totals_.clear(); }
+
+ private:
+  static BodyPair ordered(const BodyPair& p) {
+    return p.first < p.second ? p : BodyPair{p.second, p.first};
+  }
+  /// The ordered key, and +1 if `owner` is its first body (the one totals are kept for).
+  static std::pair<BodyPair, double> keyOf(const BodyPair& pair, int owner) {
+    const BodyPair key = ordered(pair);
+    return {key, owner == key.first ? 1.0 : -1.0};
+  }
+
+  std::map<BodyPair, Total> totals_;  // ordered: deterministic, no hashing
+};
+// [contact_ledger]
+
+}  // namespace stackbook
