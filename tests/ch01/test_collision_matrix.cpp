@@ -14,12 +14,11 @@
 using namespace stackbook;
 using stackbook::testing::In2D;
 using stackbook::testing::In3D;
+using stackbook::testing::kEps;
 using stackbook::testing::kTierImpulseAlgebra;
 using stackbook::testing::RandomSource;
 
 namespace {
-
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 /// Eigenvalues of a symmetric matrix, ascending.
 template <int D>

@@ -13,11 +13,10 @@
 using namespace stackbook;
 using stackbook::testing::In2D;
 using stackbook::testing::In3D;
+using stackbook::testing::kEps;
 using stackbook::testing::RandomSource;
 
 namespace {
-
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 /// r x b written out component by component, independently of crossMatrix:
 /// the 3D vector product, and in 2D the z component r_x b_y - r_y b_x.

@@ -17,11 +17,10 @@
 using namespace stackbook;
 using stackbook::testing::In2D;
 using stackbook::testing::In3D;
+using stackbook::testing::kEps;
 using stackbook::testing::RandomSource;
 
 namespace {
-
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 /// The message makeDynamicBody throws for (mass, moments), or "" if it accepts them.
 template <int D>

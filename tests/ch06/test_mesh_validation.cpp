@@ -7,14 +7,13 @@
 
 #include "stackbook/geometry/mesh_nonconvex.hpp"
 #include "stackbook/geometry/mesh_validation.hpp"
+#include "geometry_helpers.hpp"
 
 using namespace stackbook;
+using stackbook::testing::contains;
 
 namespace {
 
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
 
 template <int D>
 const MeshDefect* firstOf(const MeshCheck& check, MeshDefectKind kind) {

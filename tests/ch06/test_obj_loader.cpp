@@ -8,8 +8,10 @@
 
 #include "stackbook/geometry/mesh_primitives.hpp"
 #include "stackbook/geometry/obj_loader.hpp"
+#include "geometry_helpers.hpp"
 
 using namespace stackbook;
+using stackbook::testing::contains;
 
 namespace {
 
@@ -26,9 +28,6 @@ std::string loadError(const std::string& name) {
   return "";
 }
 
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
 
 }  // namespace
 

@@ -12,21 +12,16 @@
 #include "support/dimensions.hpp"
 #include "support/eigen_checks.hpp"
 #include "support/random_bodies.hpp"
+#include "geometry_helpers.hpp"
 
 using namespace stackbook;
+using stackbook::testing::at;
 using stackbook::testing::In2D;
 using stackbook::testing::In3D;
 using stackbook::testing::RandomSource;
 
 namespace {
 
-template <int D>
-Vec<D> at(double r, double z) {
-  Vec<D> p = Vec<D>::Zero();
-  p[0] = r;
-  p[D - 1] = z;
-  return p;
-}
 
 template <int D>
 Vec<D> randomIn(RandomSource& random, const Aabb<D>& box) {

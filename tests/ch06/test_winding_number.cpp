@@ -6,22 +6,15 @@
 #include "stackbook/geometry/mesh_nonconvex.hpp"
 #include "stackbook/geometry/winding_number.hpp"
 #include "support/dimensions.hpp"
+#include "geometry_helpers.hpp"
 
 using namespace stackbook;
+using stackbook::testing::at;
 using stackbook::testing::In2D;
 using stackbook::testing::In3D;
 
 namespace {
 
-// A point given by its distance from the axis (first coordinate) and its height along
-// the axis (last coordinate): (r, 0, z) in 3D, (r, z) in 2D.
-template <int D>
-Vec<D> at(double r, double z) {
-  Vec<D> p = Vec<D>::Zero();
-  p[0] = r;
-  p[D - 1] = z;
-  return p;
-}
 
 template <int D>
 SurfaceMesh<D> merged(const SurfaceMesh<D>& a, const SurfaceMesh<D>& b, const Vec<D>& shiftB) {

@@ -76,13 +76,13 @@ std::string bodyGroup(const std::string& svg, std::size_t i) {
   return svg.substr(at, svg.find("/>", svg.find("<path", at)) - at);
 }
 
-struct Written {
+struct WrittenSvg {
   Recording<2> recording;
   std::string svg;
 };
 
-Written writeFalling(const SvgOptions& options = {}, int frames = 60) {
-  Written w{fallingRecording2D(fewFalls(), frames, 30.0, true), ""};
+WrittenSvg writeFallingSvg(const SvgOptions& options = {}, int frames = 60) {
+  WrittenSvg w{fallingRecording2D(fewFalls(), frames, 30.0, true), ""};
   const auto path = scratchFolder("svg") / "falling.svg";
   writeAnimatedSvg(w.recording, path.string(), options);
   w.svg = readWhole(path);
@@ -94,14 +94,14 @@ Written writeFalling(const SvgOptions& options = {}, int frames = 60) {
 TEST_SUITE(STACKBOOK_CHAPTER) {
 
 TEST_CASE("The animated SVG is well-formed with balanced tags") {
-  const Written w = writeFalling();
+  const WrittenSvg w = writeFallingSvg();
   CHECK(w.svg.rfind("<?xml", 0) == 0);
   CHECK(tagBalanceProblem(w.svg) == "");
   CHECK(w.svg.find("<svg xmlns=\"http://www.w3.org/2000/svg\"") != std::string::npos);
 }
 
 TEST_CASE("The SVG has one animated group per dynamic body and draws static bodies once") {
-  const Written w = writeFalling();
+  const WrittenSvg w = writeFallingSvg();
   std::size_t dynamic = 0, statics = 0;
   for (const auto& visual : w.recording.visuals()) (visual.isStatic ? statics : dynamic) += 1;
   const auto groups = elements(w.svg, "g");
@@ -118,7 +118,7 @@ TEST_CASE("The SVG has one animated group per dynamic body and draws static bodi
 }
 
 TEST_CASE("Every SVG animation has as many keyTimes as values and they rise from 0 to 1") {
-  const Written w = writeFalling();
+  const WrittenSvg w = writeFallingSvg();
   auto animations = elements(w.svg, "animateTransform");
   const auto plain = elements(w.svg, "animate");
   animations.insert(animations.end(), plain.begin(), plain.end());
@@ -137,7 +137,7 @@ TEST_CASE("Every SVG animation has as many keyTimes as values and they rise from
 }
 
 TEST_CASE("The SVG view box holds every vertex of every body at every frame") {
-  const Written w = writeFalling();
+  const WrittenSvg w = writeFallingSvg();
   const auto box = split(attribute(elements(w.svg, "svg").front(), "viewBox"), ' ');
   REQUIRE(box.size() == 4);
   const double left = std::stod(box[0]), top = std::stod(box[1]);
@@ -156,7 +156,7 @@ TEST_CASE("The SVG view box holds every vertex of every body at every frame") {
 }
 
 TEST_CASE("The SVG keyframes replay the recorded positions and unwrapped angles") {
-  const Written w = writeFalling();
+  const WrittenSvg w = writeFallingSvg();
   const auto& rec = w.recording;
   // Positions are written to 1e-4 of the drawing's size (here about 13 units: 3 decimals).
   const double tolerance = 5e-4 + 1e-12;
@@ -193,7 +193,7 @@ TEST_CASE("The SVG keyframes replay the recorded positions and unwrapped angles"
 }
 
 TEST_CASE("An annulus is drawn as two closed loops filled even-odd") {
-  const Written w = writeFalling();
+  const WrittenSvg w = writeFallingSvg();
   const std::string group = bodyGroup(w.svg, w.recording.bodyCount() - 1);
   const std::string d = attribute(elements(group, "path").front(), "d");
   CHECK(std::count(d.begin(), d.end(), 'M') == 2);
@@ -205,7 +205,7 @@ TEST_CASE("An annulus is drawn as two closed loops filled even-odd") {
 TEST_CASE("The SVG keeps at most maxFrames frames including the first and the last") {
   SvgOptions options;
   options.maxFrames = 10;
-  const Written w = writeFalling(options, 91);  // 3 s at 30 fps
+  const WrittenSvg w = writeFallingSvg(options, 91);  // 3 s at 30 fps
   const std::string group = bodyGroup(w.svg, 1);
   const auto animation = elements(group, "animateTransform").front();
   const auto keys = split(attribute(animation, "keyTimes"), ';');

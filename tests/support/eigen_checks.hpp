@@ -7,6 +7,7 @@
 // 1e-9, T3 continuum analytic about 1 %.
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -16,6 +17,7 @@
 namespace stackbook::testing {
 
 /// Tolerance tiers (see docs/conventions.md and validation tier table).
+inline constexpr double kEps = std::numeric_limits<double>::epsilon();  ///< machine epsilon
 inline constexpr double kTierImpulseAlgebra = 1e-12;   ///< T1: single-impulse algebra
 inline constexpr double kTierDiscreteReference = 1e-9; ///< T2: same integrator, exact model
 
