@@ -1,40 +1,17 @@
 // Chapter 8: rolling friction on a ball rolling on level ground (Eq. (8.8)), and what the
-// discretisation itself costs a rolling ball. The ball's samples are a ring in its rolling
-// plane (as in tests/ch08/scenes.hpp), so it rolls as a regular polygon of `segments`
-// sides. Printed as Markdown for the course page (\include{doc} ch08_rolling.out).
+// discretisation itself costs a rolling ball. The ball is the tests' (makeRollingBall in
+// tests/ch08/scene_builders.hpp): its samples are a ring in its rolling plane, so it rolls
+// as a regular polygon of `segments` sides. Printed as Markdown for the course page
+// (\include{doc} ch08_rolling.out).
 #include <cmath>
 #include <cstdio>
-#include <memory>
 
-#include "stackbook/geometry/analytic_sdf.hpp"
-#include "stackbook/geometry/mesh_primitives.hpp"
-#include "stackbook/stepping/gbf_step.hpp"
+#include "../../tests/ch08/scene_builders.hpp"  // the rolling ball of the tests
 
 using namespace stackbook;
+using stackbook::testing::kG;
 
 namespace {
-
-constexpr double kG = 9.81;
-
-template <int D>
-std::shared_ptr<const Shape<D>> ring(double radius, int segments) {
-  if constexpr (D == 2) {
-    return std::make_shared<SphereShape<2>>(SphereSdf<2>(radius), regularPolygon(radius, segments));
-  } else {
-    SurfaceMesh<3> mesh;
-    for (int k = 0; k < segments; ++k) {
-      const double t = 2.0 * M_PI * k / segments;
-      mesh.vertices.push_back(Vec3(radius * std::cos(t), 0.0, radius * std::sin(t)));
-    }
-    mesh.vertices.push_back(Vec3(0.0, radius, 0.0));
-    mesh.vertices.push_back(Vec3(0.0, -radius, 0.0));
-    for (int k = 0; k < segments; ++k) {
-      mesh.faces.push_back({k, (k + 1) % segments, segments});
-      mesh.faces.push_back({(k + 1) % segments, k, segments + 1});
-    }
-    return std::make_shared<SphereShape<3>>(SphereSdf<3>(radius), std::move(mesh));
-  }
-}
 
 struct Run {
   double speed = 0.0;
@@ -44,29 +21,14 @@ struct Run {
 /// A ball of radius R rolling at v0 along axis 0 for `seconds`; returns its final speed.
 template <int D>
 Run roll(double v0, double muR, double dt, int segments, double seconds) {
-  const double R = 0.25, k = D == 3 ? 0.4 : 0.5;
-  World<D> w;
-  Vec<D> up = Vec<D>::Zero();
-  up[D - 1] = 1.0;
-  w.gravity = -kG * up;
   const Material m{0.0, 0.5, muR};
-  Vec<D> slab = Vec<D>::Constant(20.0);
-  slab[D - 1] = 1.0;
-  w.addBody(makeStaticBody<D>(Vec<D>(-0.5 * up)), std::make_shared<BoxShape<D>>(makeBoxShape<D>(slab)),
-            m);
-  RigidBody<D> b = makeDynamicBody<D>(1.0, AngVec<D>::Constant(k * R * R));
-  b.position = R * up;
-  b.velocity[0] = v0;
-  AngVec<D> omega = AngVec<D>::Zero();
-  omega[D == 2 ? 0 : 1] = D == 2 ? -v0 / R : v0 / R;
-  b.setAngularVelocity(omega);
-  w.addBody(b, ring<D>(R, segments), m);
+  testing::RollingScene<D> scene = testing::makeRollingBall<D>(0.25, v0, m, m, segments);
   StepSettings settings;
   settings.dt = dt;
   Run out;
   const long steps = std::lround(seconds / dt);
-  for (long n = 0; n < steps; ++n) out.counters += gbfStep<D>(w, settings);
-  out.speed = w.bodies[1].velocity[0];
+  for (long n = 0; n < steps; ++n) out.counters += gbfStep<D>(scene.world, settings);
+  out.speed = scene.speed();
   return out;
 }
 

@@ -4,7 +4,7 @@
 
 #include <memory>
 
-#include "scenes.hpp"
+#include "scene_builders.hpp"
 
 namespace stackbook::testing {
 
