@@ -8,58 +8,17 @@
 #include <memory>
 #include <vector>
 
-#include "stackbook/geometry/analytic_sdf.hpp"
-#include "stackbook/stepping/traditional_step.hpp"
+#include "../../tests/ch08/scene_builders.hpp"  // the A1/A2 incline of the tests
 
 using namespace stackbook;
+using stackbook::testing::kG;
 
 namespace {
-
-constexpr double kG = 9.81;
-
-template <int D>
-Orientation<D> tilt(double angle) {
-  if constexpr (D == 2) {
-    return Eigen::Rotation2Dd(angle);
-  } else {
-    return Eigen::Quaterniond(Eigen::AngleAxisd(-angle, Vec3::UnitY()));
-  }
-}
-
-/// A unit box (mass 1) resting on a static 20 m x 1 m slab tilted by theta.
-template <int D>
-struct Incline {
-  World<D> world;
-  Vec<D> down, normal, start;
-
-  Incline(double theta, double mu, double e) {
-    Vec<D> up = Vec<D>::Zero();
-    up[D - 1] = 1.0;
-    Vec<D> along = Vec<D>::Zero();
-    along[0] = 1.0;
-    const Orientation<D> q = tilt<D>(theta);
-    normal = q * up;
-    down = -(q * along);
-    world.gravity = -kG * up;
-    Vec<D> slab = Vec<D>::Constant(20.0);
-    slab[D - 1] = 1.0;
-    const Material material{e, mu, 0.0};
-    world.addBody(makeStaticBody<D>(Vec<D>(-0.5 * normal), q),
-                  std::make_shared<BoxShape<D>>(makeBoxShape<D>(slab)), material);
-    RigidBody<D> box = makeDynamicBody<D>(1.0, AngVec<D>::Constant(1.0 / 6.0));
-    box.orientation = q;
-    box.position = start = 0.5 * normal;
-    world.addBody(box, std::make_shared<BoxShape<D>>(makeBoxShape<D>(Vec<D>::Constant(1.0))),
-                  material);
-  }
-  double travelled() const { return (world.bodies[1].position - start).dot(down); }
-  double lift() const { return world.bodies[1].position.dot(normal) - 0.5; }
-};
 
 template <int D>
 void orders(double seconds) {
   for (const StepOrder order : {StepOrder::Gbf, StepOrder::Traditional}) {
-    Incline<D> scene(20.0 * M_PI / 180.0, 0.5, 1.0);
+    testing::InclineScene<D> scene = testing::makeIncline<D>(20.0 * M_PI / 180.0, 0.5, 1.0);
     StepSettings settings;
     settings.order = order;
     double maxLift = 0.0;
@@ -78,7 +37,7 @@ void slideErrors(SlipDirectionRule rule, const char* name) {
   const double theta = 30.0 * M_PI / 180.0, mu = 0.3;
   const double exact = 0.5 * kG * (std::sin(theta) - mu * std::cos(theta));
   for (const double dt : {1e-3, 5e-4}) {
-    Incline<D> scene(theta, mu, 0.0);
+    testing::InclineScene<D> scene = testing::makeIncline<D>(theta, mu, 0.0);
     StepSettings settings;
     settings.dt = dt;
     settings.friction.slipDirection = rule;
@@ -90,7 +49,7 @@ void slideErrors(SlipDirectionRule rule, const char* name) {
 }
 
 void costs(const std::vector<double>& schedule, const char* name) {
-  Incline<3> scene(20.0 * M_PI / 180.0, 0.5, 1.0);
+  testing::InclineScene<3> scene = testing::makeIncline<3>(20.0 * M_PI / 180.0, 0.5, 1.0);
   StepSettings settings;
   settings.contactRestitution = schedule;
   StepCounters total;
