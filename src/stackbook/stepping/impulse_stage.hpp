@@ -120,6 +120,7 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
       // taken when the pair's total impulse of the step stays inside the cone. The trial is
       // chapter 3's, with its energy guard; only the per-impulse cone test is lifted.
       if (spec.ledger != nullptr && impulse.branch == ImpulseBranch::Sliding) {
+        ++counters.frictionEvaluations;
         const ContactImpulse<D> trial = frictionalImpulse<D>(
             K, u, s.normal, e, kUnboundedTrialFriction, settings.friction);
         if (trial.branch == ImpulseBranch::Sticking &&
