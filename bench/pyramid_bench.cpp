@@ -36,20 +36,8 @@ void run(const Setting& setting, int base, double seconds, double mu) {
   const auto t0 = std::chrono::steady_clock::now();
   const StepCounters c = stacks::run<2>(world, settings, seconds, true);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  double mirror = 0.0, moved = 0.0;
-  int first = 1;
-  for (int row = 0; row < base; ++row) {
-    const int count = base - row;
-    for (int i = 0; i < count; ++i) {
-      const double xa = world.bodies[static_cast<std::size_t>(first + i)].position.x();
-      const double xb = world.bodies[static_cast<std::size_t>(first + count - 1 - i)].position.x();
-      mirror = std::max(mirror, std::abs(xa + xb));
-    }
-    first += count;
-  }
-  for (std::size_t k = 1; k < world.bodies.size(); ++k) {
-    moved = std::max(moved, (world.bodies[k].position - start.bodies[k].position).norm());
-  }
+  const double mirror = stacks::mirrorError(world, base);
+  const double moved = stacks::largestDisplacement<2>(start, world);
   std::printf("| %s | %.2e | %.2e | %.2f | %.0f |\n", setting.name, mirror, moved,
               1e3 * wall / static_cast<double>(c.steps),
               static_cast<double>(c.contact.impulses + c.shock.impulses) / static_cast<double>(c.steps));

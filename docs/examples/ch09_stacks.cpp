@@ -117,20 +117,6 @@ void tiltedTable() {
   std::printf("\nTable: ten unit boxes, each 0.2 to the side of the one below (2D); it must topple.\n\n");
 }
 
-double mirrorError(const World<2>& world, int base) {
-  double error = 0.0;
-  int first = 1;
-  for (int row = 0; row < base; ++row) {
-    const int count = base - row;
-    for (int i = 0; i < count; ++i) {
-      error = std::max(error, std::abs(world.bodies[static_cast<std::size_t>(first + i)].position.x() +
-                                       world.bodies[static_cast<std::size_t>(first + count - 1 - i)].position.x()));
-    }
-    first += count;
-  }
-  return error;
-}
-
 void pyramidTables() {
   const int base = 20;
   const double seconds = 0.3;
@@ -142,14 +128,11 @@ void pyramidTables() {
     World<2> world = start;
     StepCounters& c = counters[shock ? 1 : 0];
     c = stacks::run<2>(world, StepSettings{}, 0.1, shock);
-    const double early = mirrorError(world, base);
+    const double early = stacks::mirrorError(world, base);
     c += stacks::run<2>(world, StepSettings{}, seconds - 0.1, shock);
-    double moved = 0.0;
-    for (std::size_t k = 1; k < world.bodies.size(); ++k) {
-      moved = std::max(moved, (world.bodies[k].position - start.bodies[k].position).norm());
-    }
+    const double moved = stacks::largestDisplacement<2>(start, world);
     const std::size_t apex = world.bodies.size() - 1;
-    std::printf("| %s | %.2e | %.2e | %.2e | %.2e |\n", shock ? "on" : "off", early, mirrorError(world, base),
+    std::printf("| %s | %.2e | %.2e | %.2e | %.2e |\n", shock ? "on" : "off", early, stacks::mirrorError(world, base),
                 moved, start.bodies[apex].position.y() - world.bodies[apex].position.y());
   }
   std::printf("\nTable: the 2D pyramid with a %d-box base (%zu boxes), after %.1f s.\n\n", base,

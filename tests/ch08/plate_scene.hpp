@@ -45,13 +45,7 @@ PlateRun plateRun(double speed, double phase, double dt) {
             material);
   auto shape = std::make_shared<SphereShape<D>>(makeSphereShape<D>(radius));
   RigidBody<D> b = ball<D>(radius);
-  Vec<D> lowest = shape->surfaceSamples().front();
-  for (const Vec<D>& s : shape->surfaceSamples()) {
-    if (s[D - 1] < lowest[D - 1]) lowest = s;
-  }
-  if constexpr (D == 3) {
-    b.orientation = Eigen::Quaterniond::FromTwoVectors(lowest, Vec3(0.0, 0.0, -1.0));
-  }
+  turnLowestSampleDown<D>(b, *shape);  // only the ball's own samples can find the plate
   const double gap = 0.1 + phase * speed * dt;
   b.position = Vec<D>::Constant(0.125);
   b.position[D - 1] = 0.5 * thickness + radius + gap;

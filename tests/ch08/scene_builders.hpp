@@ -193,6 +193,20 @@ struct DropScene {
   double upSpeed() const { return dropped().velocity[D - 1]; }
 };
 
+/// The body-frame surface sample of `shape` that is lowest once `b` is turned so that it
+/// points straight down (3D; in 2D the ball's ring already has a vertex at -90 degrees).
+template <int D>
+Vec<D> turnLowestSampleDown(RigidBody<D>& b, const Shape<D>& shape) {
+  Vec<D> lowest = shape.surfaceSamples().front();
+  for (const Vec<D>& s : shape.surfaceSamples()) {
+    if (s[D - 1] < lowest[D - 1]) lowest = s;
+  }
+  if constexpr (D == 3) {
+    b.orientation = Eigen::Quaterniond::FromTwoVectors(lowest, Vec3(0.0, 0.0, -1.0));
+  }
+  return lowest;
+}
+
 template <int D>
 DropScene<D> makeBallDrop(double radius, double gap, const Material& material) {
   DropScene<D> scene;
@@ -200,13 +214,7 @@ DropScene<D> makeBallDrop(double radius, double gap, const Material& material) {
   addSlab<D>(scene.world, 0.0, material);
   auto shape = std::make_shared<SphereShape<D>>(makeSphereShape<D>(radius));
   RigidBody<D> b = ball<D>(radius);
-  Vec<D> lowest = shape->surfaceSamples().front();
-  for (const Vec<D>& s : shape->surfaceSamples()) {
-    if (s[D - 1] < lowest[D - 1]) lowest = s;
-  }
-  if constexpr (D == 3) {
-    b.orientation = Eigen::Quaterniond::FromTwoVectors(lowest, Vec3(0.0, 0.0, -1.0));
-  }
+  const Vec<D> lowest = turnLowestSampleDown<D>(b, *shape);
   scene.contactHeight = -(b.orientation * lowest)[D - 1];
   b.position = (scene.contactHeight + gap) * up<D>();
   b.syncAngularVelocity();

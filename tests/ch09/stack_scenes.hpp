@@ -181,6 +181,33 @@ inline World<2> pyramid2d(int base, const Material& material, double gap = 0.0) 
   return world;
 }
 
+/// B15's symmetry measure for a pyramid built by pyramid2d(): the largest |x_i + x_mirror(i)|
+/// over its rows (zero for a pyramid that stands still, since it starts centred on x = 0).
+inline double mirrorError(const World<2>& world, int base) {
+  double error = 0.0;
+  int first = 1;
+  for (int row = 0; row < base; ++row) {
+    const int count = base - row;
+    for (int i = 0; i < count; ++i) {
+      const double xa = world.bodies[static_cast<std::size_t>(first + i)].position.x();
+      const double xb = world.bodies[static_cast<std::size_t>(first + count - 1 - i)].position.x();
+      error = std::max(error, std::abs(xa + xb));
+    }
+    first += count;
+  }
+  return error;
+}
+
+/// The largest distance any body other than body 0 (the ground) has moved from `start`.
+template <int D>
+double largestDisplacement(const World<D>& start, const World<D>& now) {
+  double moved = 0.0;
+  for (std::size_t k = 1; k < now.bodies.size(); ++k) {
+    moved = std::max(moved, (now.bodies[k].position - start.bodies[k].position).norm());
+  }
+  return moved;
+}
+
 /// A 3D pyramid of unit cubes: square layers base x base, (base-1) x (base-1), ...,
 /// each centred on the z axis.
 inline World<3> pyramid3d(int base, const Material& material) {

@@ -11,35 +11,12 @@
 #include "stack_scenes.hpp"
 
 using namespace stackbook;
+using stackbook::stacks::largestDisplacement;
+using stackbook::stacks::mirrorError;
 
 namespace {
 
 constexpr double kStackSeconds = 1.0;  // simulated time of the B14 stacks (validation asks 10 s)
-
-/// The largest |x_i + x_mirror(i)| over the rows of a 2D pyramid built by pyramid2d().
-double mirrorError(const World<2>& world, int base) {
-  double error = 0.0;
-  int first = 1;
-  for (int row = 0; row < base; ++row) {
-    const int count = base - row;
-    for (int i = 0; i < count; ++i) {
-      const double xa = world.bodies[static_cast<std::size_t>(first + i)].position.x();
-      const double xb = world.bodies[static_cast<std::size_t>(first + count - 1 - i)].position.x();
-      error = std::max(error, std::abs(xa + xb));
-    }
-    first += count;
-  }
-  return error;
-}
-
-template <int D>
-double largestDisplacement(const World<D>& start, const World<D>& now) {
-  double moved = 0.0;
-  for (std::size_t k = 1; k < now.bodies.size(); ++k) {
-    moved = std::max(moved, (now.bodies[k].position - start.bodies[k].position).norm());
-  }
-  return moved;
-}
 
 }  // namespace
 
