@@ -1,8 +1,8 @@
 #pragma once
 // Scenes for chapter 9: box stacks, a plank on two stacks of unequal count, a heavy box
-// on a light one, a 2D pyramid, a card A-frame and a tilted stack, built on a static
-// ground slab whose top face is the plane "up = 0". Used by the tests and by the programs
-// docs/examples/ch09_*.cpp and bench/stack_bench.cpp (which include this file).
+// on a light one, a 2D pyramid, a card A-frame, a tilted stack and GBF's seesaw, built on
+// a static ground slab whose top face is the plane "up = 0". Used by the tests and by the
+// programs docs/examples/ch09_*.cpp and bench/stack_bench.cpp (which include this file).
 
 #include <algorithm>
 #include <cmath>
@@ -161,6 +161,24 @@ template <int D>
 double plankTilt(const World<D>& world) {
   const Vec<D> a = world.bodies[7].orientation * Vec<D>(Vec<D>::UnitX());
   return std::atan2(std::abs(a[D - 1]), std::hypot(a[0], D == 3 ? a[1] : 0.0));
+}
+
+/// GBF's seesaw: a plank 4 m x 0.1 m (mass 1) balanced on a static post 0.2 m wide and
+/// 0.5 m tall, a 0.4 m box of mass 5 on its right end. Bodies: ground 0, post 1, plank 2,
+/// box 3. The box's weight turns the plank about the post's right corner.
+inline World<2> seesaw(const Material& material) {
+  World<2> world = groundWorld<2>(material);
+  world.addBody(makeStaticBody<2>(Vec2(0.0, 0.25), Orientation<2>::Identity()),
+                boxShape<2>(Vec2(0.2, 0.5)), material);
+  addBox<2>(world, Vec2(4.0, 0.1), 1.0, Vec2(0.0, 0.55), material);
+  addBox<2>(world, Vec2(0.4, 0.4), 5.0, Vec2(1.7, 0.8), material);
+  return world;
+}
+
+/// The seesaw plank's (body 2) angle against the horizontal, negative when its right end is down.
+inline double seesawAngle(const World<2>& world) {
+  const Vec2 axis = world.bodies[2].orientation * Vec2(1.0, 0.0);
+  return std::atan2(axis.y(), axis.x());
 }
 
 /// A 2D pyramid of square boxes (side 1, mass 1) with `base` boxes in the bottom row and

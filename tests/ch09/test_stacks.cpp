@@ -144,10 +144,11 @@ TEST_CASE_TEMPLATE("B4: a 1000 kg box on a 1 kg box holds with shock propagation
 TEST_CASE("B15: a 2D pyramid with a 20-box base holds its height with shock propagation") {
   // 210 boxes, 0.3 s. With the pass no box moves 1 cm and the apex keeps its height to
   // 1 mm (without it the apex sinks by centimetres: the chapter's table; not run here, to
-  // keep the slow suite within its budget). The validation's symmetry test
-  // (mirror error < 1e-3) is NOT met: the fixed sweep order of the contact stage and of
-  // the pass walks the pyramid sideways (the chapter gives the measured numbers); the
-  // bound here, 1e-2, only guards against this getting worse.
+  // keep the slow suite within its budget). GBF's step does NOT meet the validation's
+  // symmetry test (mirror error < 1e-3): the contact stage leaves velocities the pass
+  // cannot touch (Eq. (9.8)) and the pyramid walks sideways (the chapter gives the
+  // measured numbers); the bound here, 1e-2, only guards against this getting worse.
+  // The pass as the contact stage meets it (the next test).
   const World<2> start = stacks::pyramid2d(20, Material{0.0, 0.5, 0.0});
   World<2> on = start;
   stacks::run<2>(on, StepSettings{}, 0.3, true);
@@ -201,6 +202,41 @@ TEST_CASE("B15 and A17 under one cone per step: the 5-box-base pyramid holds at 
   }
 }
 // [b15_step_cone]
+
+// [b15_pass_as_contact]
+TEST_CASE("B15 with the pass as the contact stage: the 20-box-base pyramid stays mirror-symmetric and still") {
+  // Eq. (9.9): no contact stage, 20 sweeps per level, one cone per step. 210 boxes, 1 s.
+  // B15 asks for a mirror error below 1e-3 after 10 s and no box moving 1 cm; the pass
+  // alone stays below 1e-5 for both in 1 s (bench/pyramid_bench runs the 10 s: 3.4e-5).
+  // GBF's step walks the same pyramid by 8 cm in 10 s (the chapter's benchmark table).
+  const World<2> start = stacks::pyramid2d(20, Material{0.0, 0.5, 0.0});
+  World<2> world = start;
+  stacks::run<2>(world, passAsContactStage(), 1.0, true);
+  CHECK(mirrorError(world, 20) < 1e-5);
+  CHECK(largestDisplacement<2>(start, world) < 1e-5);
+}
+
+TEST_CASE("B15 and A17 with the pass as the contact stage: a 3D pyramid stands still and the cards keep their threshold") {
+  // 14 cubes, 0.25 s: under 1e-6 m (GBF's step: about 2e-4 m). The A-frame's two cards are
+  // each a level alone on the ground, swept now that no contact stage does it: they
+  // stand above mu_req = 0.2332 (at 0.25) and fall below it (0.22).
+  const World<3> start = stacks::pyramid3d(3, Material{0.0, 0.5, 0.0});
+  World<3> world = start;
+  stacks::run<3>(world, passAsContactStage(), 0.25, true);
+  CHECK(largestDisplacement<3>(start, world) < 1e-6);
+
+  const double beta = 25.0 * M_PI / 180.0;
+  World<2> stands = stacks::cardFrame(beta, Material{0.0, 0.25, 0.0});
+  World<2> falls = stacks::cardFrame(beta, Material{0.0, 0.22, 0.0});
+  const World<2> frame = stands;
+  stacks::run<2>(stands, passAsContactStage(), 2.0, true);
+  stacks::run<2>(falls, passAsContactStage(), 2.0, true);
+  for (const std::size_t card : {std::size_t{1}, std::size_t{2}}) {
+    CHECK((stands.bodies[card].position - frame.bodies[card].position).norm() < 1e-3);
+    CHECK(falls.bodies[card].position.y() < 0.5 * frame.bodies[card].position.y());
+  }
+}
+// [b15_pass_as_contact]
 
 TEST_CASE("B15 in 3D: a pyramid of 14 cubes stands") {
   const World<3> start = stacks::pyramid3d(3, Material{0.0, 0.5, 0.0});

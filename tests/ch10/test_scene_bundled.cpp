@@ -69,6 +69,20 @@ void runEveryScene(int steps) {
   }
 }
 
+/// Largest distance a body moved between the first and the last recorded frame.
+double largestMove(const SceneRun& run) {
+  return std::visit(
+      [](const auto& r) {
+        const auto& frames = r.recording.poses();
+        double moved = 0.0;
+        for (std::size_t b = 0; b < frames.front().size(); ++b) {
+          moved = std::max(moved, (frames.back()[b].position - frames.front()[b].position).norm());
+        }
+        return moved;
+      },
+      run);
+}
+
 }  // namespace
 
 TEST_SUITE(STACKBOOK_CHAPTER) {
@@ -107,5 +121,32 @@ TEST_SUITE(STACKBOOK_CHAPTER "_slow") {
 TEST_CASE("Every bundled scene runs 250 steps staying finite and bounded without energy gain") {
   runEveryScene(250);
 }
+
+// [card_house_pass_as_contact]
+TEST_CASE("The card house stands under GBF's step and falls gaining energy when the pass replaces the contact stage") {
+  // Chapter 9, Eq. (9.9): the graph orders each pair of leaning cards (one rests on the
+  // other). Without a contact stage the lower card is settled alone on its foot, tips, and
+  // is frozen while it falls, pushing its partner with infinite mass: energy is added and
+  // the house comes down. GBF's contact stage settles both cards together first, and the
+  // house stands. This asserts the mode's known failure (the chapter's pitfall), so that a
+  // fix shows up as a failing test to update.
+  const std::string path = std::string(STACKBOOK_SCENES_DIR) + "/card_house_2d.json";
+  RunOptions options;
+  options.duration = 0.5;
+  const Scene gbfScene = loadScene(path);
+  const Scene passScene = loadScene(path, {"solver.shock.replacesContactStage=true", "solver.shock.sweepsPerLevel=20",
+                                           "solver.frictionCone=\"step\""});
+  const SceneRun gbf = runScene(gbfScene, options);
+  const SceneRun pass = runScene(passScene, options);
+  const auto energyGain = [](const Scene& scene, const SceneRun& run) {
+    const nlohmann::json e = runSummaryJson(scene, run).at("energy");
+    return e.at("end").at("total").get<double>() - e.at("start").at("total").get<double>();
+  };
+  CHECK(largestMove(gbf) < 1e-3);
+  CHECK(energyGain(gbfScene, gbf) < 1e-3 * 210.0);  // 210 J at the start
+  CHECK(largestMove(pass) > 0.05);
+  CHECK(energyGain(passScene, pass) > 1.0);
+}
+// [card_house_pass_as_contact]
 
 }  // TEST_SUITE

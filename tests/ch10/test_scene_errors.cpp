@@ -87,6 +87,8 @@ const std::vector<BadCase>& badCases() {
        "must be \"deepest\" or \"centre\", got \"middle\""},
       {"unknown friction cone", R"({"solver": {"frictionCone": "pair"}})", "/solver/frictionCone",
        "must be \"impulse\" or \"step\", got \"pair\""},
+      {"pass flag not a boolean", R"({"solver": {"shock": {"replacesContactStage": 1}}})",
+       "/solver/shock/replacesContactStage", "expected true or false, got the number 1"},
       {"zero normal cosine", R"({"solver": {"impulsePointNormalCosine": 0}})",
        "/solver/impulsePointNormalCosine", "must be > 0, got 0"},
       {"static body with a mass",

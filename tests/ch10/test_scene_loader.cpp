@@ -243,7 +243,8 @@ TEST_CASE("Scene defaults are gravity down the last axis and GBF's step settings
 TEST_CASE("Solver and effect settings reach the step settings") {
   const json doc = json::parse(R"({"dimension": 2, "dt": 0.0005,
     "solver": {"collisionIterations": 3, "contactIterations": 2, "contactRestitution": [-0.4, 0],
-               "shock": {"sweepsPerLevel": 3, "pairIterations": 7}, "order": "traditional",
+               "shock": {"sweepsPerLevel": 3, "pairIterations": 7, "replacesContactStage": true},
+               "order": "traditional",
                "impulsePoint": "centre", "impulsePointNormalCosine": 0.9, "frictionCone": "step"},
     "effects": {"friction": false, "shockPropagation": true},
     "bodies": [{"shape": {"type": "disk", "radius": 1}}]})");
@@ -253,6 +254,7 @@ TEST_CASE("Solver and effect settings reach the step settings") {
   CHECK(s.settings.contactRestitutionAt(1) == -0.4);
   CHECK(s.settings.shock.sweepsPerLevel == 3);
   CHECK(s.settings.shock.pairIterations == 7);
+  CHECK(s.settings.shock.replacesContactStage);
   CHECK(s.settings.order == StepOrder::Traditional);
   CHECK(s.settings.impulsePoint.rule == ImpulsePointRule::DepthWeightedCentre);
   CHECK(s.settings.impulsePoint.normalCosine == 0.9);

@@ -818,12 +818,16 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
   }
   if (const json* shock = member(solver, "shock")) {
     const std::string q = p + "/shock";
-    r.requireObject(*shock, q, {"passes", "sweepsPerLevel", "pairIterations", "restitution"}, "the shock settings");
+    r.requireObject(*shock, q, {"passes", "sweepsPerLevel", "pairIterations", "restitution", "replacesContactStage"},
+                    "the shock settings");
     if (const json* v = member(*shock, "passes")) s.shock.passes = r.integer(*v, q + "/passes", 1, 100);
     if (const json* v = member(*shock, "sweepsPerLevel")) s.shock.sweepsPerLevel = r.integer(*v, q + "/sweepsPerLevel", 1, 100);
     if (const json* v = member(*shock, "pairIterations")) s.shock.pairIterations = r.integer(*v, q + "/pairIterations", 1, 1000);
     if (const json* v = member(*shock, "restitution")) {
       s.shock.restitution = schedule(*v, q + "/restitution", static_cast<std::size_t>(s.shock.sweepsPerLevel), "sweepsPerLevel");
+    }
+    if (const json* v = member(*shock, "replacesContactStage")) {
+      s.shock.replacesContactStage = r.boolean(*v, q + "/replacesContactStage");
     }
   }
 }

@@ -4,6 +4,7 @@
 /// motion, the freeze guard that makes a level infinitely heavy, the bottom-up pass over
 /// the topological levels, and the step with the pass as chapter 8's post-contact hook.
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <span>
@@ -79,6 +80,36 @@ ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings
 }
 // [world_contact_graph]
 
+// [unpressed_contacts]
+/// `graph` completed with the contacts that gravity does not press (Eq. (9.9), detail 3):
+/// every broad-phase pair that interferes at the poses x + dt v but has no edge. Between two
+/// dynamic bodies it gets both edges, a cycle, so the two share a level and are swept
+/// together (a body wedged sideways between others, any contact in a scene without gravity);
+/// with a static partner it gets the edge static -> dynamic. The pass as the contact stage
+/// builds its levels from this graph, since no contact stage resolves these contacts for it.
+template <int D>
+ContactGraph withUnpressedContacts(const World<D>& world, const ContactGraph& graph,
+                                   const ContactGraphSettings& settings,
+                                   DetectionCounters* counters = nullptr) {
+  const auto ordered = [](int a, int b) { return a < b ? BodyPair{a, b} : BodyPair{b, a}; };
+  std::vector<BodyPair> pressed;
+  pressed.reserve(graph.edgeCount());
+  for (const ContactPair& c : graph.edges()) pressed.push_back(ordered(c.below, c.above));
+  std::sort(pressed.begin(), pressed.end());
+  const std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, settings.dt);
+  std::vector<ContactPair> edges = graph.edges();
+  for (const BodyPair& p : sweepAndPrune<D>(views, settings.broad, counters)) {  // sorted by (i, j)
+    if (std::binary_search(pressed.begin(), pressed.end(), ordered(p.first, p.second))) continue;
+    if (pairInterference<D>(views, p, settings.narrow, counters).empty()) continue;
+    const bool firstStatic = world.bodies[static_cast<std::size_t>(p.first)].isStatic();
+    const bool secondStatic = world.bodies[static_cast<std::size_t>(p.second)].isStatic();
+    if (!firstStatic) edges.push_back(ContactPair{p.second, p.first});  // p.first rests on p.second
+    if (!secondStatic) edges.push_back(ContactPair{p.first, p.second});
+  }
+  return ContactGraph(graph.bodyCount(), edges);
+}
+// [unpressed_contacts]
+
 // [freeze_guard]
 /// Temporary infinite mass (Eq. (9.4)): freeze(i) sets 1/m and I^{-1} of body i to zero,
 /// so by Eq. (1.9) its K is 0, RigidBody::applyImpulse leaves it alone and an impulse
@@ -139,6 +170,12 @@ struct ShockPassReport {
 };
 
 // [shock_pass]
+/// True if the step's contact stage runs before the pass: the contact effect runs, with at
+/// least one sweep, and the pass does not replace it (ShockSettings::replacesContactStage).
+inline bool contactStageRuns(const StepSettings& settings, const Effects& effects) {
+  return effects.contact && settings.contactIterations > 0 && !settings.shock.replacesContactStage;
+}
+
 /// True if level l of `levels` is one body that rests on static bodies only and supports
 /// nothing (a box alone on the ground). The pass skips it: its supporters are infinitely
 /// heavy already, freezing it affects no other body, and its contacts were swept by the
@@ -161,8 +198,9 @@ bool isolatedLevel(const World<D>& world, const ContactGraph& graph, const Conta
 /// up, settings.shock.sweepsPerLevel sweeps over the level's pairs with restitution
 /// e_s = settings.shock.restitutionAt(s) (at most shock.pairIterations impulses per pair
 /// per sweep), then the level's bodies are frozen (Eq. (9.4)) for the levels above.
-/// Isolated levels (isolatedLevel()) are skipped. All freezes are released at the end,
-/// also on an exception. Work goes to `counters`. Loops: levels (L), sweeps (S), the
+/// Isolated levels (isolatedLevel()) are skipped when the contact stage has swept them
+/// (contactStageRuns()). A sweep that applies no impulse ends its level early. All freezes
+/// are released at the end, also on an exception. Work goes to `counters`. Loops: levels (L), sweeps (S), the
 /// level's pairs; resolvePair() caps its own loop.
 /// `effects` are the step's (resolveEffects()); the overload without them resolves them.
 template <int D>
@@ -177,8 +215,10 @@ void shockPropagationPass(World<D>& world, const ContactGraph& graph, const Cont
   spec.rollingFriction = effects.rollingFriction;
   spec.ledger = ledger;  // the step's ledger under FrictionConeRule::StepTotal (Eq. (8.13))
   std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, settings.dt);
+  // Isolated levels are skipped only when the contact stage swept them (Eq. (9.9)).
+  const bool skipIsolated = contactStageRuns(settings, effects);
   std::vector<char> isolated(levels.levelCount(), 0);  // decided before anything is frozen
-  for (std::size_t l = 0; l < levels.levelCount(); ++l) {
+  for (std::size_t l = 0; l < levels.levelCount() && skipIsolated; ++l) {
     isolated[l] = isolatedLevel<D>(world, graph, levels, l) ? 1 : 0;
   }
   FreezeGuard<D> frozen(world);
@@ -187,8 +227,10 @@ void shockPropagationPass(World<D>& world, const ContactGraph& graph, const Cont
     if (isolated[l] != 0) continue;
     pairs.clear();
     for (const ContactPair& c : levels.pairs(l)) pairs.push_back(BodyPair{c.below, c.above});  // Eq. (9.2)
+    // A sweep that applies no impulse ends the level: nothing approaches, and no later
+    // sweep can find an approach, since restitution only scales an impulse (Eq. (8.5)).
     for (int s = 1; s <= shock.sweepsPerLevel && !pairs.empty(); ++s) {
-      sweepPairs<D>(world, views, pairs, spec, s, settings.dt, settings, counters);
+      if (sweepPairs<D>(world, views, pairs, spec, s, settings.dt, settings, counters) == 0) break;
     }
     for (const int body : levels.bodies(l)) frozen.freeze(body);  // Eq. (9.4)
   }
@@ -256,8 +298,11 @@ ShockPassReport shockPropagation(World<D>& world, const StepSettings& settings, 
   const Effects effects = resolveEffects<D>(world, settings.effects);
   for (int pass = 0; pass < settings.shock.passes; ++pass) {
     const auto start = std::chrono::steady_clock::now();
-    const ContactGraph graph =
-        worldContactGraph<D>(world, stepGraphSettings(settings, effects), &counters.detection);
+    const ContactGraphSettings graphSettings = stepGraphSettings(settings, effects);
+    ContactGraph graph = worldContactGraph<D>(world, graphSettings, &counters.detection);
+    if (!contactStageRuns(settings, effects)) {  // Eq. (9.9): nothing else resolves them
+      graph = withUnpressedContacts<D>(world, graph, graphSettings, &counters.detection);
+    }
     const ContactLevels levels =
         layering == Layering::Topological ? topologicalLevels(graph) : bfsDepthLevels(graph);
     report.graphSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -281,6 +326,21 @@ PostContactHook<D> shockPropagationHook(Layering layering = Layering::Topologica
     shockPropagation<D>(world, settings, counters.shock, layering, ledger);
   };
 }
+
+// [pass_as_contact_settings]
+/// The settings of the pass as the contact stage (chapter 9, Eq. (9.9)), from `base`: no
+/// contact stage (the pass runs whenever contact does and sweeps every level),
+/// `sweepsPerLevel` sweeps per level (20 converge the 20-row pyramid of B15; chapter 9's table),
+/// and one Coulomb cone per step (Eq. (8.13)), since a cube's corner needs mu >= 0.849
+/// (Eq. (9.7)). Use it with stackingStep().
+inline StepSettings passAsContactStage(StepSettings base = {}, int sweepsPerLevel = 20) {
+  base.shock.replacesContactStage = true;
+  base.shock.sweepsPerLevel = sweepsPerLevel;
+  base.shock.restitution.clear();  // GBF's ramp over the new sweep count
+  base.frictionCone = FrictionConeRule::StepTotal;
+  return base;
+}
+// [pass_as_contact_settings]
 
 /// GBF's step with shock propagation: gbfStep() with shockPropagationHook(). The pass runs
 /// when the shockPropagation effect does (inferred on for two or more dynamic bodies).

@@ -139,6 +139,15 @@ StepCounters gbfStep(World<D>& world, const StepSettings& settings,
   counters.steps = 1;
   const detail::StepStart<D> stepStart(world);
   Effects effects = resolveEffects<D>(world, settings.effects);
+  // [pass_replaces_contact]
+  // The pass as the contact stage (chapter 9, Eq. (9.9)): whenever contact runs, the
+  // shock-propagation hook runs instead of the contact stage, also for one dynamic body,
+  // unless the scene forces the shock-propagation effect off.
+  const bool passReplacesContact = settings.shock.replacesContactStage && effects.contact &&
+                                   static_cast<bool>(hook) &&
+                                   settings.effects.shockPropagation.value_or(true);
+  if (passReplacesContact) effects.shockPropagation = true;
+  // [pass_replaces_contact]
   effects.shockPropagation = effects.shockPropagation && static_cast<bool>(hook);
 
   // (1) Collisions: where the bodies would be after a free step, with their own e.
@@ -158,7 +167,7 @@ StepCounters gbfStep(World<D>& world, const StepSettings& settings,
   counters.velocityUpdateSeconds += detail::secondsSince(t);
 
   // (3) Contact: where the new velocities would carry the bodies, restitution ramp.
-  if (effects.contact) {
+  if (effects.contact && !passReplacesContact) {
     StageSpec contact = contactStageSpec(settings, effects, Lookahead::Velocity);
     if (settings.frictionCone == FrictionConeRule::StepTotal) contact.ledger = &counters.contactLedger;
     runImpulseStage<D>(world, contact, dt, settings, counters.contact);

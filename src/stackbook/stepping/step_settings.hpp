@@ -58,6 +58,11 @@ struct ShockSettings {
   int pairIterations = 10;
   /// Restitution of level sweep l = 1..sweepsPerLevel; empty means e_l = -1 + l / sweepsPerLevel.
   std::vector<double> restitution;
+  /// The pass as the contact stage (chapter 9, Eq. (9.9)): GBF's step skips its contact
+  /// stage and runs the pass whenever contact runs (one dynamic body included), sweeping
+  /// every level. Off (GBF): the contact stage runs and the pass follows it. Pair it with
+  /// more sweeps per level (20 converge a 20-row pyramid). The traditional order ignores it.
+  bool replacesContactStage = false;
 
   /// The restitution of level sweep l (1-based).
   double restitutionAt(int l) const {
