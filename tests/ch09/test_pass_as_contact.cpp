@@ -51,7 +51,6 @@ TEST_CASE_TEMPLATE("with the pass as the contact stage a box alone on the ground
 }
 // [test_pass_single_body]
 
-
 // [test_pass_seesaw]
 TEST_CASE("with the pass as the contact stage the seesaw is glued: the box's load never reaches the plank") {
   // GBF's step: the contact stage carries the box's weight into the plank, which turns
@@ -125,7 +124,7 @@ TEST_CASE("a level sweep that applies no impulse ends its level") {
 
 }  // TEST_SUITE
 
-// The longer runs (a second or more of simulated time; about a minute under the sanitizers).
+// The longer simulations (together about a minute and a half under the sanitizers).
 TEST_SUITE(STACKBOOK_CHAPTER "_slow") {
 
 TEST_CASE_TEMPLATE("with the pass as the contact stage the A2 block slides with g(sin - mu cos)", Dim, In2D, In3D) {

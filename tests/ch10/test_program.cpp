@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -52,7 +53,10 @@ fs::path scratch() {
 Outcome run(const std::string& arguments, const fs::path& workDir = scratch()) {
   const fs::path program = programPath();
   REQUIRE_MESSAGE(!program.empty(), "the stackbook program is not built (target stackbook_program)");
-  const fs::path out = scratch() / "stdout.txt", err = scratch() / "stderr.txt";
+  // One pair of files per process: CTest runs the test cases of this file in parallel,
+  // each in its own process, and shared files would mix their outputs.
+  const std::string id = std::to_string(::getpid());
+  const fs::path out = scratch() / ("stdout_" + id + ".txt"), err = scratch() / ("stderr_" + id + ".txt");
   const std::string command = "cd '" + workDir.string() + "' && '" + program.string() + "' " + arguments + " >'" +
                               out.string() + "' 2>'" + err.string() + "'";
   const int status = std::system(command.c_str());
