@@ -206,24 +206,26 @@ TEST_CASE("B15 and A17 under one cone per step: the 5-box-base pyramid holds at 
 // [b15_pass_as_contact]
 TEST_CASE("B15 with the pass as the contact stage: the 20-box-base pyramid stays mirror-symmetric and still") {
   // Eq. (9.9): no contact stage, 20 sweeps per level, one cone per step. 210 boxes, 1 s.
-  // B15 asks for a mirror error below 1e-3 after 10 s and no box moving 1 cm; the pass
-  // alone stays below 1e-5 for both in 1 s (bench/pyramid_bench runs the 10 s: 3.4e-5).
-  // GBF's step walks the same pyramid by 8 cm in 10 s (the chapter's benchmark table).
+  // B15 asks for a mirror error below 1e-3 after 10 s and no box moving 1 cm; over 1 s
+  // that is 1e-4 and 1e-3 (measured: 2.5e-6 and 1.2e-6; bench/pyramid_bench runs the
+  // 10 s: 3.4e-5). GBF's step walks the same pyramid by 8 cm in 10 s and fails both.
   const World<2> start = stacks::pyramid2d(20, Material{0.0, 0.5, 0.0});
   World<2> world = start;
   stacks::run<2>(world, passAsContactStage(), 1.0, true);
-  CHECK(mirrorError(world, 20) < 1e-5);
-  CHECK(largestDisplacement<2>(start, world) < 1e-5);
+  CHECK(mirrorError(world, 20) < 1e-4);
+  CHECK(largestDisplacement<2>(start, world) < 1e-3);
 }
 
 TEST_CASE("B15 and A17 with the pass as the contact stage: a 3D pyramid stands still and the cards keep their threshold") {
-  // 14 cubes, 0.25 s: under 1e-6 m (GBF's step: about 2e-4 m). The A-frame's two cards are
+  // 14 cubes, 0.25 s: B15's mirror bound over 0.25 s is 2.5e-5 m, which no cube moving
+  // less than half of it can break (measured: 3.5e-8 m; GBF's step: about 2e-4 m in
+  // 0.5 s). The A-frame's two cards are
   // each a level alone on the ground, swept now that no contact stage does it: they
   // stand above mu_req = 0.2332 (at 0.25) and fall below it (0.22).
   const World<3> start = stacks::pyramid3d(3, Material{0.0, 0.5, 0.0});
   World<3> world = start;
   stacks::run<3>(world, passAsContactStage(), 0.25, true);
-  CHECK(largestDisplacement<3>(start, world) < 1e-6);
+  CHECK(largestDisplacement<3>(start, world) < 0.5 * 2.5e-5);
 
   const double beta = 25.0 * M_PI / 180.0;
   World<2> stands = stacks::cardFrame(beta, Material{0.0, 0.25, 0.0});
