@@ -10,25 +10,16 @@
 #include "stackbook/collision/narrow_phase.hpp"
 #include "support/dimensions.hpp"
 #include "support/eigen_checks.hpp"
+#include "support/tilt.hpp"
 #include "test_shapes.hpp"
 
 using namespace stackbook;
 using stackbook::testing::boxShape;
 using stackbook::testing::In2D;
 using stackbook::testing::In3D;
+using stackbook::testing::tilt;
 
 namespace {
-
-/// A rotation by `angle` in the plane of axis 0 and the up axis D-1 (2D: about z; 3D:
-/// about -y), so that axis 0 turns towards up. Shared by 2D and 3D tests.
-template <int D>
-Orientation<D> tilt(double angle) {
-  if constexpr (D == 2) {
-    return Eigen::Rotation2Dd(angle);
-  } else {
-    return Eigen::Quaterniond(Eigen::AngleAxisd(-angle, Vec3::UnitY()));
-  }
-}
 
 /// The unit vector along axis k.
 template <int D>

@@ -12,6 +12,7 @@
 
 #include "stackbook/geometry/analytic_sdf.hpp"
 #include "stackbook/stepping/traditional_step.hpp"
+#include "../support/tilt.hpp"
 
 namespace stackbook::testing {
 
@@ -32,16 +33,6 @@ Vec<D> axis(int k) {
 template <int D>
 Vec<D> up() {
   return axis<D>(D - 1);
-}
-
-/// A rotation by `angle` that turns axis 0 towards up (2D: about z; 3D: about -y).
-template <int D>
-Orientation<D> tilt(double angle) {
-  if constexpr (D == 2) {
-    return Eigen::Rotation2Dd(angle);
-  } else {
-    return Eigen::Quaterniond(Eigen::AngleAxisd(-angle, Vec3::UnitY()));
-  }
 }
 
 /// Side lengths with every entry `side`, except the up axis `height`.
