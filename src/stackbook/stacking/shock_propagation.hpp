@@ -214,6 +214,8 @@ void shockPropagationPass(World<D>& world, const ContactGraph& graph, const Cont
   spec.friction = effects.friction;
   spec.rollingFriction = effects.rollingFriction;
   spec.ledger = ledger;  // the step's ledger under FrictionConeRule::StepTotal (Eq. (8.13))
+  spec.recorder = settings.contactRecorder;  // chapter 10's contacts output; nullptr: off
+  spec.stage = ContactStage::Shock;
   std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, settings.dt);
   // Isolated levels are skipped only when the contact stage swept them (Eq. (9.9)).
   const bool skipIsolated = contactStageRuns(settings, effects);

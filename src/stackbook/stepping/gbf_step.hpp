@@ -103,6 +103,8 @@ inline StageSpec collisionStageSpec(const StepSettings& s, const Effects& effect
   if (!effects.restitution) spec.restitution = [](int, const PairMaterial&) { return 0.0; };
   spec.friction = effects.friction;
   spec.rollingFriction = effects.rollingFriction;
+  spec.recorder = s.contactRecorder;
+  spec.stage = ContactStage::Collision;
   return spec;
 }
 
@@ -113,6 +115,8 @@ inline StageSpec contactStageSpec(const StepSettings& s, const Effects& effects,
                  [&s](int k, const PairMaterial&) { return s.contactRestitutionAt(k); }};
   spec.friction = effects.friction;
   spec.rollingFriction = effects.rollingFriction;
+  spec.recorder = s.contactRecorder;
+  spec.stage = ContactStage::Contact;
   return spec;
 }
 // [stage_specs]

@@ -19,6 +19,7 @@
 #include "stackbook/impulse/frictional_impulse.hpp"
 #include "stackbook/impulse/rolling_friction.hpp"
 #include "stackbook/stepping/contact_ledger.hpp"
+#include "stackbook/stepping/contact_recorder.hpp"
 #include "stackbook/stepping/step_counters.hpp"
 #include "stackbook/stepping/step_settings.hpp"
 #include "stackbook/stepping/world.hpp"
@@ -73,6 +74,10 @@ struct StageSpec {
   /// The step's contact ledger under FrictionConeRule::StepTotal (Eq. (8.13)); nullptr:
   /// GBF's cone on each impulse alone.
   ContactLedger* ledger = nullptr;
+  /// Where to record each applied impulse (chapter 10's contacts output), tagged `stage`;
+  /// nullptr (the default): nothing is recorded.
+  ContactRecorder* recorder = nullptr;
+  ContactStage stage = ContactStage::Contact;
 };
 // [stage_spec]
 
@@ -137,6 +142,9 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
     if (impulse.j.isZero(0.0)) return applied;  // immovable or no response: nothing to iterate
     applyPairImpulse<D>(owner, rOwner, other, rOther, impulse.j);  // +j owner, -j other
     if (spec.ledger != nullptr) spec.ledger->record<D>(pair, s.owner, impulse.j, s.normal);
+    if (spec.recorder != nullptr) {
+      spec.recorder->record<D>(spec.stage, s.owner, s.other, s.point, s.normal, impulse.j);
+    }
     counters.countImpulse(impulse.branch);
     if (impulse.restitution > 0.0) ++counters.elasticImpulses;
     // [pair_rolling]

@@ -13,6 +13,7 @@
 #include "stackbook/collision/narrow_phase.hpp"
 #include "stackbook/impulse/friction_settings.hpp"
 #include "stackbook/stepping/contact_ledger.hpp"
+#include "stackbook/stepping/contact_recorder.hpp"
 #include "stackbook/stepping/effects.hpp"
 
 namespace stackbook {
@@ -110,6 +111,10 @@ struct StepSettings {
   EffectOverrides effects;
   /// Shock propagation (chapter 9); used only when that effect runs.
   ShockSettings shock;
+  /// Not a physics setting: where the stages record every impulse they apply (chapter 10's
+  /// contacts output). nullptr (the default): nothing is recorded; the trajectory is the
+  /// same either way, bit for bit.
+  ContactRecorder* contactRecorder = nullptr;
 
   /// The restitution of contact sweep k (1-based), Eq. (8.5).
   double contactRestitutionAt(int k) const {
