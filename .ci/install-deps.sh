@@ -3,6 +3,7 @@
 #   libeigen3-dev  Eigen 3.4 (linear algebra)
 #   doctest-dev    doctest 2.4.9 (tests)
 #   libtinyobjloader-dev   reading OBJ meshes
+#   libassimp-dev  reading STL and PLY meshes
 #   ccache         faster rebuilds (optional; changes no result)
 #   nlohmann-json3-dev, libcli11-dev, libtinygltf-dev, libjs-three   the simulator: scene
 #       files (JSON), the command line, animated glTF output and its offline viewer page
@@ -12,7 +13,7 @@ if [ "$(id -u)" -eq 0 ]; then SUDO=""; else SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
-  g++ cmake make ccache libeigen3-dev doctest-dev libtinyobjloader-dev \
+  g++ cmake make ccache libeigen3-dev doctest-dev libtinyobjloader-dev libassimp-dev \
   nlohmann-json3-dev libcli11-dev libtinygltf-dev libjs-three \
   doxygen graphviz libjs-mathjax >/dev/null
 echo "stackbook: Debian packages installed."

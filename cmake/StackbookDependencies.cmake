@@ -22,6 +22,8 @@ if(NOT _doctest_cmake)
 endif()
 # OBJ meshes (chapter 6): tinyobjloader built with double-precision reals.
 stackbook_require_package(tinyobjloader libtinyobjloader-dev)
+# STL and PLY meshes (chapter 6): assimp reads them, stackbook checks and repairs them.
+stackbook_require_package(assimp libassimp-dev)
 # The simulator (chapter 10): scene files in JSON, the command line, glTF output.
 stackbook_require_package(nlohmann_json nlohmann-json3-dev 3.10)
 stackbook_require_package(CLI11 libcli11-dev)
