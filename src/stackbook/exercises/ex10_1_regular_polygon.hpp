@@ -14,7 +14,7 @@
 namespace stackbook {
 
 /// Everything the scene loader needs from one shape description, in the body frame
-/// (centroid at the origin): the same three things buildShape() in scene.cpp makes for
+/// (centroid at the origin): the same three things buildShape() in scene_shapes.cpp makes for
 /// every built-in shape.
 struct PolygonShapeBuild {
   /// The signed distance: negative inside, positive outside (a chapter 6 grid shape).

@@ -1,0 +1,216 @@
+// Scene files (chapter 10): the messages (SceneError, "did you mean"), the typed reading
+// of values and the checks of the scene's settings objects. See scene.hpp and
+// docs/scene_format.md.
+#include <algorithm>
+#include <cctype>
+#include <optional>
+#include <sstream>
+
+#include "stackbook/scene/scene.hpp"
+#include "stackbook/scene/scene_reader.hpp"
+
+namespace stackbook {
+
+using nlohmann::json;
+
+namespace {
+
+/// `text` on one line: each line break (with the indentation after it) becomes "; " (or a
+/// space after a colon), so
+/// that a multi-line message from the geometry code (a mesh's list of defects) still
+/// prints as the one line a SceneError promises.
+std::string oneLine(const std::string& text) {
+  std::string out;
+  for (std::size_t k = 0; k < text.size(); ++k) {
+    if (text[k] != '\n') {
+      out += text[k];
+      continue;
+    }
+    while (k + 1 < text.size() && (text[k + 1] == ' ' || text[k + 1] == '\n')) ++k;
+    if (k + 1 < text.size()) out += !out.empty() && out.back() == ':' ? " " : "; ";
+  }
+  return out;
+}
+
+}  // namespace
+
+SceneError::SceneError(const std::string& file, const std::string& pointer,
+                       const std::string& reason)
+    : std::runtime_error(file + ": " + (pointer.empty() ? std::string() : pointer + ": ") + oneLine(reason)),
+      file_(file), pointer_(pointer), reason_(oneLine(reason)) {}
+
+int Scene::bodyCount() const {
+  return std::visit([](const auto& b) { return b.world.size(); }, bodies);
+}
+
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      const std::size_t substitute = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitute});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string closestName(const std::string& word, const std::vector<std::string>& candidates) {
+  const auto lower = [](std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+  };
+  const std::string w = lower(word);
+  std::string best;
+  std::size_t bestDistance = std::max<std::size_t>(1, word.size() / 3) + 1;
+  for (const std::string& c : candidates) {
+    const std::size_t d = editDistance(w, lower(c));
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = c;
+    }
+  }
+  return best;
+}
+
+namespace scene_detail {
+
+std::string escapePointerToken(const std::string& key) {
+  std::string out;
+  for (char c : key) {
+    if (c == '~') {
+      out += "~0";
+    } else if (c == '/') {
+      out += "~1";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+/// A short account of a JSON value for "got ..." in messages.
+std::string describeValue(const json& v) {
+  std::string text = v.dump();
+  if (text.size() > 40) text = text.substr(0, 37) + "...";
+  switch (v.type()) {
+    case json::value_t::null: return "null";
+    case json::value_t::boolean: return "the boolean " + text;
+    case json::value_t::string: return "the string " + text;
+    case json::value_t::array: return "an array of " + std::to_string(v.size()) + " elements";
+    case json::value_t::object: return "an object";
+    default: return "the number " + text;
+  }
+}
+
+std::string formatNumber(double x) {
+  std::ostringstream out;
+  out.precision(10);
+  out << x;
+  return out.str();
+}
+
+void readSolver(const Reader& r, const json& solver, StepSettings& s) {
+  const std::string p = "/solver";
+  r.requireObject(solver, p,
+                  {"collisionIterations", "collisionPairIterations", "contactIterations",
+                   "contactPairIterations", "contactRestitution", "shock", "order", "impulsePoint",
+                   "impulsePointNormalCosine", "frictionCone"},
+                  "the solver settings");
+  if (const json* v = member(solver, "collisionIterations")) s.collisionIterations = r.integer(*v, p + "/collisionIterations", 0, 1000);
+  if (const json* v = member(solver, "collisionPairIterations")) s.collisionPairIterations = r.integer(*v, p + "/collisionPairIterations", 1, 1000);
+  if (const json* v = member(solver, "contactIterations")) s.contactIterations = r.integer(*v, p + "/contactIterations", 0, 1000);
+  if (const json* v = member(solver, "contactPairIterations")) s.contactPairIterations = r.integer(*v, p + "/contactPairIterations", 1, 1000);
+  // A field that names one of two choices: "must be \"a\" or \"b\", got \"c\"" otherwise.
+  const auto choose = [&](const char* field, const char* a, auto valueA, const char* b, auto valueB) {
+    const std::string ptr = p + "/" + field;
+    const std::string word = r.string(*member(solver, field), ptr);
+    if (word == a) return valueA;
+    if (word != b) {
+      r.fail(ptr, "must be \"" + std::string(a) + "\" or \"" + b + "\", got \"" + word + "\"");
+    }
+    return valueB;
+  };
+  if (member(solver, "order")) {
+    s.order = choose("order", "gbf", StepOrder::Gbf, "traditional", StepOrder::Traditional);
+  }
+  if (member(solver, "impulsePoint")) {
+    s.impulsePoint.rule = choose("impulsePoint", "deepest", ImpulsePointRule::Deepest, "centre",
+                                 ImpulsePointRule::DepthWeightedCentre);
+  }
+  if (member(solver, "frictionCone")) {
+    s.frictionCone = choose("frictionCone", "impulse", FrictionConeRule::EachImpulse, "step",
+                            FrictionConeRule::StepTotal);
+  }
+  if (const json* v = member(solver, "impulsePointNormalCosine")) {
+    s.impulsePoint.normalCosine = r.inRange(*v, p + "/impulsePointNormalCosine", 0.0, 1.0);
+    if (!(s.impulsePoint.normalCosine > 0.0)) r.fail(p + "/impulsePointNormalCosine", "must be > 0, got 0");
+  }
+  const auto schedule = [&](const json& v, const std::string& ptr, std::size_t count, const char* countName) {
+    if (!v.is_array()) r.fail(ptr, "expected an array of numbers in [-1, 0], got " + describeValue(v));
+    if (v.size() != count) {
+      r.fail(ptr, "must hold " + std::string(countName) + " = " + std::to_string(count) + " values, got " +
+                      std::to_string(v.size()));
+    }
+    std::vector<double> out;
+    for (std::size_t k = 0; k < v.size(); ++k) out.push_back(r.inRange(v[k], ptr + "/" + std::to_string(k), -1.0, 0.0));
+    return out;
+  };
+  if (const json* v = member(solver, "contactRestitution")) {
+    s.contactRestitution = schedule(*v, p + "/contactRestitution",
+                                    static_cast<std::size_t>(s.contactIterations), "contactIterations");
+  }
+  if (const json* shock = member(solver, "shock")) {
+    const std::string q = p + "/shock";
+    r.requireObject(*shock, q, {"passes", "sweepsPerLevel", "pairIterations", "restitution", "replacesContactStage"},
+                    "the shock settings");
+    if (const json* v = member(*shock, "passes")) s.shock.passes = r.integer(*v, q + "/passes", 1, 100);
+    if (const json* v = member(*shock, "sweepsPerLevel")) s.shock.sweepsPerLevel = r.integer(*v, q + "/sweepsPerLevel", 1, 100);
+    if (const json* v = member(*shock, "pairIterations")) s.shock.pairIterations = r.integer(*v, q + "/pairIterations", 1, 1000);
+    if (const json* v = member(*shock, "restitution")) {
+      s.shock.restitution = schedule(*v, q + "/restitution", static_cast<std::size_t>(s.shock.sweepsPerLevel), "sweepsPerLevel");
+    }
+    if (const json* v = member(*shock, "replacesContactStage")) {
+      s.shock.replacesContactStage = r.boolean(*v, q + "/replacesContactStage");
+    }
+  }
+}
+
+void readEffects(const Reader& r, const json& effects, EffectOverrides& e) {
+  r.requireObject(effects, "/effects",
+                  {"gravity", "collision", "restitution", "contact", "friction", "rollingFriction", "shockPropagation"},
+                  "the effect overrides");
+  const auto read = [&](const char* key, std::optional<bool>& slot) {
+    if (const json* v = member(effects, key)) slot = r.boolean(*v, std::string("/effects/") + key);
+  };
+  read("gravity", e.gravity);
+  read("collision", e.collision);
+  read("restitution", e.restitution);
+  read("contact", e.contact);
+  read("friction", e.friction);
+  read("rollingFriction", e.rollingFriction);
+  read("shockPropagation", e.shockPropagation);
+}
+
+std::map<std::string, Material> readMaterials(const Reader& r, const json& materials) {
+  if (!materials.is_object()) r.fail("/materials", "expected an object of named materials, got " + describeValue(materials));
+  std::map<std::string, Material> out;
+  for (const auto& item : materials.items()) {
+    const std::string ptr = "/materials/" + escapePointerToken(item.key());
+    r.requireObject(item.value(), ptr, {"restitution", "friction", "rollingFriction"}, "a material");
+    Material m;
+    if (const json* v = member(item.value(), "restitution")) m.restitution = r.inRange(*v, ptr + "/restitution", 0.0, 1.0);
+    if (const json* v = member(item.value(), "friction")) m.friction = r.nonNegative(*v, ptr + "/friction");
+    if (const json* v = member(item.value(), "rollingFriction")) m.rollingFriction = r.nonNegative(*v, ptr + "/rollingFriction");
+    out.emplace(item.key(), m);
+  }
+  return out;
+}
+
+}  // namespace scene_detail
+
+}  // namespace stackbook
