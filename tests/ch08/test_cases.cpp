@@ -108,7 +108,7 @@ TEST_CASE_TEMPLATE("A4: the same box stays at 15 and slides without tipping at 1
 TEST_CASE_TEMPLATE("A10: a ball rolls down a 30 degree incline with a = g sin / (1 + k) and no slip",
                    Dim, In2D, In3D) {
   // Sphere k = 2/5: a = 3.5036 m/s^2, mu_min = 0.1650; disk k = 1/2: a = 3.2700, mu_min
-  // 0.1925 (validation.md, A10). mu = 0.5 is above both. The ring of 2000 samples lies in
+  // 0.1925 (catalogue case A10). mu = 0.5 is above both. The ring of 2000 samples lies in
   // the rolling plane (scenes.hpp), so contact is that of a 2000-gon.
   constexpr int D = Dim::value;
   // The slip is measured after every step. At a switch from one ring vertex to the next

@@ -143,7 +143,7 @@ TEST_CASE_TEMPLATE("A5: a ball with e 0.8 reaches the apexes e^(2n) h0 for n up 
     DropScene<D> scene = makeBallDrop<D>(0.25, 1.0, Material{0.8, 0.0, 0.0});
     StepSettings settings;
     settings.dt = steps[run];
-    // Impacts at 0.4515, 1.1740, 1.7519, 2.2143 s (validation.md); the 4th apex follows
+    // Impacts at 0.4515, 1.1740, 1.7519, 2.2143 s (case A5); the 4th apex follows
     // at 2.2143 + e^4 sqrt(2 h0 / g) = 2.40 s.
     const std::vector<double> h = apexes<D>(scene, settings, 2.5);
     REQUIRE(h.size() >= 4);

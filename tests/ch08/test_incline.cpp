@@ -79,7 +79,7 @@ TEST_CASE("A3: a box pushed up a 20 degree incline stops after v0^2/(2 decel) an
   const double theta = degrees(20.0), mu = 0.5, v0 = 3.0, dt = 1e-3;
   const double decel = kG * (std::sin(theta) + mu * std::cos(theta));
   const double distance = v0 * v0 / (2.0 * decel), stopTime = v0 / decel;
-  REQUIRE(distance == within(0.5650, 1e-4));  // validation.md, A3
+  REQUIRE(distance == within(0.5650, 1e-4));  // the catalogue's closed form, case A3
   REQUIRE(stopTime == within(0.3767, 1e-4));
   InclineScene<2> scene = makeIncline<2>(theta, mu, 0.0, 0.0, -v0);
   double stoppedAt = -1.0, maxSpeedAfterStop = 0.0, maxSpeed = -v0;
@@ -125,7 +125,7 @@ TEST_CASE_TEMPLATE("A2: a box on a 30 degree incline with mu 0.3 slides with g(s
   constexpr int D = Dim::value;
   const double theta = degrees(30.0), mu = 0.3;
   const double a = slideAcceleration(theta, mu);
-  REQUIRE(a == within(2.3563, 1e-4));  // validation.md, A2
+  REQUIRE(a == within(2.3563, 1e-4));  // the catalogue's closed form, case A2
   const double exact = 0.5 * a;                         // s(1 s)
   double error[2] = {0.0, 0.0};
   for (int halving = 0; halving < 2; ++halving) {
@@ -166,7 +166,7 @@ TEST_CASE("A3: a box sliding down a 20 degree incline at 3 m/s stops at 3.5886 m
   const double theta = degrees(20.0), mu = 0.5, v0 = 3.0, dt = 1e-3;
   const double decel = kG * (mu * std::cos(theta) - std::sin(theta));
   const double distance = v0 * v0 / (2.0 * decel), stopTime = v0 / decel;
-  REQUIRE(distance == within(3.5886, 1e-4));  // validation.md, A3
+  REQUIRE(distance == within(3.5886, 1e-4));  // the catalogue's closed form, case A3
   REQUIRE(stopTime == within(2.3924, 1e-4));
   InclineScene<2> scene = makeIncline<2>(theta, mu, 0.0, 0.0, v0);
   double stoppedAt = -1.0, maxSpeedAfterStop = 0.0, minSpeed = v0;

@@ -131,7 +131,7 @@ TEST_CASE_TEMPLATE("with the pass as the contact stage the A2 block slides with 
   constexpr int D = Dim::value;
   const double theta = testing::degrees(30.0), mu = 0.3;
   const double a = stacks::kG * (std::sin(theta) - mu * std::cos(theta));
-  REQUIRE(a == doctest::Approx(2.3563).epsilon(1e-4));  // validation.md, A2
+  REQUIRE(a == doctest::Approx(2.3563).epsilon(1e-4));  // the catalogue's closed form, case A2
   testing::InclineScene<D> scene = testing::makeIncline<D>(theta, mu, 0.0);
   runSteps<D>(scene.world, passOnly(), 1000);
   CHECK(scene.travelled() == doctest::Approx(0.5 * a).epsilon(0.01));

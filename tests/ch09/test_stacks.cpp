@@ -1,4 +1,4 @@
-// Chapter 9, slow suite: the validation cases of shock propagation (validation.md B4,
+// Chapter 9, slow suite: the validation cases of shock propagation (the validation catalogue's B4,
 // B14, B15, B17, A17, A19) simulated for a fraction of a second to two seconds each.
 // Run with: ctest --preset main -L ch09_slow   (about 40 s optimised; see the chapter).
 #include <doctest/doctest.h>
@@ -16,7 +16,7 @@ using stackbook::stacks::mirrorError;
 
 namespace {
 
-constexpr double kStackSeconds = 1.0;  // simulated time of the B14 stacks (validation asks 10 s)
+constexpr double kStackSeconds = 1.0;  // simulated time of the B14 stacks (the catalogue asks 10 s)
 
 /// A17 on either side of mu_req = 0.2332 under `settings`, 2 s: at mu 0.25 neither card of
 /// the 25-degree A-frame moves 1 mm, at 0.22 both centres drop below half their height.
