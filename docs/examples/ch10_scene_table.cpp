@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <regex>
 #include <string>
 #include <variant>
 #include <vector>
@@ -23,18 +24,35 @@ std::string effectsOf(const stackbook::Scene& scene) {
 
 /// `text` safe inside a Markdown table cell of Doxygen's: a '|' would end the cell (and
 /// Doxygen shows numeric entities such as &#124; literally), so it becomes '/'; '<' would
-/// start an HTML tag.
+/// start an HTML tag. A command-line option ("--set key=value") is set as code, so that
+/// Markdown does not turn its "--" into a dash and the reader can paste it; a validation
+/// case code (A17, B15, A2b) links to its entry in the course's validation catalogue.
 std::string cell(const std::string& text) {
-  std::string out;
+  std::string escaped;
   for (char c : text) {
     if (c == '|') {
-      out += '/';
+      escaped += '/';
     } else if (c == '<') {
-      out += "&lt;";
+      escaped += "&lt;";
     } else {
-      out += c;
+      escaped += c;
     }
   }
+  static const std::regex option(R"((--[a-z]+(?: [^ ),;]+)?))");
+  static const std::regex caseCode(R"((^|[^A-Za-z0-9_.])([AB][0-9]{1,2})([a-z]?)(?![A-Za-z0-9_]))");
+  std::string out;
+  // Codes outside the code spans only: split on the options first.
+  std::sregex_iterator it(escaped.begin(), escaped.end(), option), end;
+  std::size_t last = 0;
+  const auto linkCodes = [&](const std::string& plain) {
+    return std::regex_replace(plain, caseCode, "$1\\ref case_$2$3 \"$2$3\"");
+  };
+  for (; it != end; ++it) {
+    out += linkCodes(escaped.substr(last, static_cast<std::size_t>(it->position()) - last));
+    out += "`" + it->str() + "`";
+    last = static_cast<std::size_t>(it->position() + it->length());
+  }
+  out += linkCodes(escaped.substr(last));
   return out;
 }
 

@@ -29,14 +29,14 @@ enum class StepOrder {
 
 // [gbf_friction]
 /// The friction settings the step uses by default: chapter 3's safeguards with GBF's
-/// slip direction T = u_t / |u_t| (SlipDirectionRule::RelativeVelocity). Chapter 3's own
-/// default (Blended) leans T towards the sticking trial's direction by a fraction
-/// rho = mu j*_n / |j*_t| that does not depend on dt, which could turn a fast slide's
-/// friction off -u_t when K is anisotropic in the tangent plane (corner samples in 3D).
-/// Re-measured on validation case A2 in 3D (docs/examples/ch08_step_orders.cpp): both rules
-/// slide 0.100 % too far at dt = 1e-3 and 0.050 % at 5e-4, the first-order error of the
-/// integrator, with no difference between them at the printed precision. The numbers give
-/// no reason to leave GBF's rule, which is the paper's.
+/// slip direction T = u_t / |u_t| (SlipDirectionRule::RelativeVelocity), the paper's rule.
+/// Chapter 3's own default (Blended, Eq. (3.4)) leans T towards the slip the impact creates
+/// by rho = mu j_n(T*) / |j*_t|, with j_n(T*) the normal impulse of a slide along T*
+/// (Eq. (3.5)). In the contact stage a sliding contact approaches at about g dt, so rho is
+/// of order dt and Blended tends to this rule as dt -> 0 (chapter 8 measures validation
+/// case A2 in 3D with both: they agree at the printed precision). They differ at the
+/// stick/slide switch in 3D, where this rule's impulse jumps and Blended's does not
+/// (chapter 3, continuity): select Blended there.
 inline FrictionSettings gbfFrictionSettings() {
   FrictionSettings f;
   f.slipDirection = SlipDirectionRule::RelativeVelocity;
