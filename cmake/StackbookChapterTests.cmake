@@ -11,7 +11,10 @@
 # and their tests live in tests/chNN/exercises.cpp (suite chNN_exercises, skipped by default).
 # They build into their own binary, test_chNN_exercises, always (so the stubs are known to
 # compile); STACKBOOK_EXERCISE_SOLUTIONS=ON links the solutions instead of the stubs, and
-# STACKBOOK_EXERCISES=ON registers "chNN/exercises" (labels: exercise, chNN) that runs them.
+# STACKBOOK_EXERCISES=ON registers one entry per exercise, "exNN.M" (labels: exercise, chNN),
+# which says in one line that the exercise is not solved yet while its stub keeps a
+# "// TODO(reader)" comment and runs its test cases after (cmake/run_exercise.cmake), and
+# "exercises/solved", which runs last and prints "N of 31 exercises solved".
 # The target stackbook_exercises builds every chapter's exercise binary (and nothing else).
 # STACKBOOK_SOLUTIONS=ON (the main preset) also builds test_chNN_solutions from the same
 # compiled exercises.cpp with the solutions linked, registered as "chNN/solutions" (labels
@@ -63,9 +66,24 @@ function(stackbook_add_chapter chapter)
     add_dependencies(stackbook_exercises ${exercise_target})
     add_dependencies(${target} ${exercise_target})
     if(STACKBOOK_EXERCISES)
-      add_test(NAME ${chapter}/exercises
-               COMMAND ${exercise_target} --no-skip --test-suite=${chapter}_exercises)
-      set_tests_properties(${chapter}/exercises PROPERTIES LABELS "exercise;${chapter}")
+      # One entry per exercise, "exNN.M" (ctest --preset exercises -R ex03.2), run through
+      # cmake/run_exercise.cmake: one line while the stub is unsolved, its tests after.
+      foreach(exercise IN LISTS ARG_EXERCISES)
+        string(REGEX MATCH "^ex([0-9][0-9])_([0-9]+)_" _ "${exercise}")
+        math(EXPR chapter_number "${CMAKE_MATCH_1}")
+        set(number "${chapter_number}.${CMAKE_MATCH_2}")
+        set(test_name "ex${CMAKE_MATCH_1}.${CMAKE_MATCH_2}")
+        add_test(NAME ${test_name}
+                 COMMAND ${CMAKE_COMMAND} -DEXERCISE=${number}
+                         -DSTUB=${PROJECT_SOURCE_DIR}/src/stackbook/exercises/${exercise}.cpp
+                         -DBINARY=$<TARGET_FILE:${exercise_target}> -DSUITE=${chapter}_exercises
+                         -DSTATUS_DIR=${PROJECT_BINARY_DIR}/exercise_status
+                         -P ${PROJECT_SOURCE_DIR}/cmake/run_exercise.cmake)
+        set_tests_properties(${test_name} PROPERTIES LABELS "exercise;${chapter}"
+                             FAIL_REGULAR_EXPRESSION "is not solved yet|fails its tests")
+        set_property(GLOBAL APPEND PROPERTY STACKBOOK_EXERCISE_TESTS ${test_name})
+        set_property(GLOBAL APPEND PROPERTY STACKBOOK_EXERCISE_NUMBERS ${number})
+      endforeach()
     endif()
 
     if(STACKBOOK_SOLUTIONS)

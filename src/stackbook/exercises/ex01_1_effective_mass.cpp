@@ -1,4 +1,7 @@
 // Exercise 1.1 (your answer goes here): see ex01_1_effective_mass.hpp and chapter 1.
+// Implement: effectiveMass and effectiveMassExtremes. Delete every TODO(reader) comment once
+// your code is in: while one is left, the exercise counts as not solved and its tests do not
+// run.
 #include "stackbook/exercises/ex01_1_effective_mass.hpp"
 
 namespace stackbook {

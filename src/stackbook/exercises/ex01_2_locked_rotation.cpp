@@ -1,4 +1,7 @@
 // Exercise 1.2 (your answer goes here): see ex01_2_locked_rotation.hpp and chapter 1.
+// Implement: inverseInertiaLockedAbout and inverseInertiaHingedAbout. Delete every TODO(reader)
+// comment once your code is in: while one is left, the exercise counts as not solved and its
+// tests do not run.
 #include "stackbook/exercises/ex01_2_locked_rotation.hpp"
 
 namespace stackbook {

@@ -1,4 +1,6 @@
 // Exercise 1.3 (your answer goes here): see ex01_3_measured_k.hpp and chapter 1.
+// Implement: measuredCollisionMatrix. Delete every TODO(reader) comment once your code is in:
+// while one is left, the exercise counts as not solved and its tests do not run.
 #include "stackbook/exercises/ex01_3_measured_k.hpp"
 
 namespace stackbook {

@@ -1,4 +1,6 @@
 // Exercise 2.1 (stub): the impulse that makes a contact separate at a target speed.
+// Implement: separationSpeedImpulse. Delete every TODO(reader) comment once your code is in:
+// while one is left, the exercise counts as not solved and its tests do not run.
 // The reference solution is chapters/solutions/ex02_1_separation_speed.cpp.
 #include "stackbook/exercises/ex02_1_separation_speed.hpp"
 

@@ -1,4 +1,6 @@
 // Exercise 2.2 (stub): Poisson restitution.
+// Implement: poissonImpulse. Delete every TODO(reader) comment once your code is in: while one
+// is left, the exercise counts as not solved and its tests do not run.
 // The reference solution is chapters/solutions/ex02_2_poisson_restitution.cpp.
 #include "stackbook/exercises/ex02_2_poisson_restitution.hpp"
 

@@ -1,4 +1,6 @@
 // Exercise 2.3 (stub): restitution with a threshold speed, and a bouncing ball.
+// Implement: thresholdRestitution and dropBall. Delete every TODO(reader) comment once your code
+// is in: while one is left, the exercise counts as not solved and its tests do not run.
 // The reference solution is chapters/solutions/ex02_3_restitution_threshold.cpp.
 #include "stackbook/exercises/ex02_3_restitution_threshold.hpp"
 

@@ -1,4 +1,7 @@
 // Exercise 2.4 (stub): two contacts resolved at once.
+// Implement: twoContactMatrix and simultaneousNormalImpulses. Delete every TODO(reader) comment
+// once your code is in: while one is left, the exercise counts as not solved and its tests do
+// not run.
 // The reference solution is chapters/solutions/ex02_4_two_contacts.cpp.
 #include "stackbook/exercises/ex02_4_two_contacts.hpp"
 

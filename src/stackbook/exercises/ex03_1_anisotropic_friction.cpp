@@ -1,4 +1,6 @@
 // Exercise 3.1 (stub): anisotropic friction, the elliptic cone.
+// Implement: anisotropicFrictionalImpulse. Delete every TODO(reader) comment once your code is
+// in: while one is left, the exercise counts as not solved and its tests do not run.
 // The reference solution is chapters/solutions/ex03_1_anisotropic_friction.cpp.
 #include "stackbook/exercises/ex03_1_anisotropic_friction.hpp"
 

@@ -1,4 +1,6 @@
 // Exercise 3.2 (stub): the sticking trial projected onto the friction cone.
+// Implement: projectedFrictionalImpulse. Delete every TODO(reader) comment once your code is in:
+// while one is left, the exercise counts as not solved and its tests do not run.
 // The reference solution is chapters/solutions/ex03_2_cone_projection.cpp.
 #include "stackbook/exercises/ex03_2_cone_projection.hpp"
 

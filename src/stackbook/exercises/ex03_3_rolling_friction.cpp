@@ -1,4 +1,7 @@
 // Exercise 3.3 (stub): rolling and spinning friction.
+// Implement: rollingFrictionImpulse and applyRollingFriction. Delete every TODO(reader) comment
+// once your code is in: while one is left, the exercise counts as not solved and its tests do
+// not run.
 // The reference solution is chapters/solutions/ex03_3_rolling_friction.cpp.
 #include "stackbook/exercises/ex03_3_rolling_friction.hpp"
 

@@ -1,4 +1,6 @@
 // Exercise 4.2 stub: your starting point. The tests are in tests/ch04/exercises.cpp:
+// Implement: crossMatrix4 and collisionMatrix4. Delete every TODO(reader) comment once your code
+// is in: while one is left, the exercise counts as not solved and its tests do not run.
 //   build/exercises/tests/ch04/test_ch04_exercises --no-skip -ts=ch04_exercises -tc="Exercise 4.2*"
 #include "stackbook/exercises/ex04_2_four_dimensions.hpp"
 

@@ -1,4 +1,7 @@
 // Exercise 4.3 stub: your starting point. The tests are in tests/ch04/exercises.cpp:
+// Implement: solveCramer2 and solveCollisionMatrix2D. Delete every TODO(reader) comment once
+// your code is in: while one is left, the exercise counts as not solved and its tests do not
+// run.
 //   build/exercises/tests/ch04/test_ch04_exercises --no-skip -ts=ch04_exercises -tc="Exercise 4.3*"
 #include "stackbook/exercises/ex04_3_cramer_fast_path.hpp"
 

@@ -1,4 +1,7 @@
 // Exercise 5.1 (stub): the gyroscopic correction of the orientation update.
+// Implement: advancePositionGyroscopic and advanceFreeBodyGyroscopic. Delete every TODO(reader)
+// comment once your code is in: while one is left, the exercise counts as not solved and its
+// tests do not run.
 // The reference solution is chapters/solutions/ex05_1_gyroscopic_correction.cpp.
 #include "stackbook/exercises/ex05_1_gyroscopic_correction.hpp"
 

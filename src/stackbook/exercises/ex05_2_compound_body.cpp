@@ -1,4 +1,6 @@
 // Exercise 5.2 (stub): mass properties of a compound body by the parallel-axis theorem.
+// Implement: combineMassProperties. Delete every TODO(reader) comment once your code is in:
+// while one is left, the exercise counts as not solved and its tests do not run.
 // The reference solution is chapters/solutions/ex05_2_compound_body.cpp.
 #include "stackbook/exercises/ex05_2_compound_body.hpp"
 

@@ -1,4 +1,6 @@
 // Exercise 5.3 (stub): a solid of revolution as a closed mesh.
+// Implement: revolveProfile. Delete every TODO(reader) comment once your code is in: while one
+// is left, the exercise counts as not solved and its tests do not run.
 // The reference solution is chapters/solutions/ex05_3_solid_of_revolution.cpp.
 #include "stackbook/exercises/ex05_3_solid_of_revolution.hpp"
 

@@ -1,4 +1,6 @@
 // Exercise 6.1 (your answer goes here): see ex06_1_rounded_box.hpp and chapter 6.
+// Implement: RoundedBoxSdf (distance and normal). Delete every TODO(reader) comment once your
+// code is in: while one is left, the exercise counts as not solved and its tests do not run.
 #include "stackbook/exercises/ex06_1_rounded_box.hpp"
 
 namespace stackbook::exercises {

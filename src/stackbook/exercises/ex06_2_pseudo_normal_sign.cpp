@@ -1,4 +1,7 @@
 // Exercise 6.2 (your answer goes here): see ex06_2_pseudo_normal_sign.hpp and chapter 6.
+// Implement: PseudoNormalSign (the pseudo-normals and inside). Delete every TODO(reader) comment
+// once your code is in: while one is left, the exercise counts as not solved and its tests do
+// not run.
 #include "stackbook/exercises/ex06_2_pseudo_normal_sign.hpp"
 
 namespace stackbook::exercises {

@@ -1,4 +1,7 @@
 // Exercise 6.3 (your answer goes here): see ex06_3_narrow_band.hpp and chapter 6.
+// Implement: NarrowBandGrid (its constructor, value, storedNodes and memoryBytes).
+// Delete every TODO(reader) comment once your code is in: while one is left, the exercise
+// counts as not solved and its tests do not run.
 #include "stackbook/exercises/ex06_3_narrow_band.hpp"
 
 namespace stackbook::exercises {

@@ -1,4 +1,6 @@
 // Exercise 7.1 (your answer goes here): see ex07_1_uniform_grid.hpp and chapter 7.
+// Implement: uniformGridPairs. Delete every TODO(reader) comment once your code is in: while one
+// is left, the exercise counts as not solved and its tests do not run.
 #include "stackbook/exercises/ex07_1_uniform_grid.hpp"
 
 namespace stackbook {

@@ -1,4 +1,6 @@
 // Exercise 7.2 (your answer goes here): see ex07_2_edge_edge.hpp and chapter 7.
+// Implement: edgeEdgeInterference. Delete every TODO(reader) comment once your code is in: while
+// one is left, the exercise counts as not solved and its tests do not run.
 #include "stackbook/exercises/ex07_2_edge_edge.hpp"
 
 namespace stackbook {

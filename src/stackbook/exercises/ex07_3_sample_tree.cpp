@@ -1,4 +1,7 @@
 // Exercise 7.3 (your answer goes here): see ex07_3_sample_tree.hpp and chapter 7.
+// Implement: SampleTree and appendSamplesInsideWithTree. Delete every TODO(reader) comment once
+// your code is in: while one is left, the exercise counts as not solved and its tests do not
+// run.
 #include "stackbook/exercises/ex07_3_sample_tree.hpp"
 
 namespace stackbook {

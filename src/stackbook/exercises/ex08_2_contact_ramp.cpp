@@ -1,4 +1,6 @@
 // Exercise 8.2 (your answer goes here): see ex08_2_contact_ramp.hpp and chapter 8.
+// Implement: halvingContactRamp. Delete every TODO(reader) comment once your code is in: while
+// one is left, the exercise counts as not solved and its tests do not run.
 #include "stackbook/exercises/ex08_2_contact_ramp.hpp"
 
 namespace stackbook::exercises {

@@ -1,4 +1,6 @@
 // Exercise 8.3 (your answer goes here): see ex08_3_rolling_rest_angle.hpp and chapter 8.
+// Implement: rollingRestAngle. Delete every TODO(reader) comment once your code is in: while one
+// is left, the exercise counts as not solved and its tests do not run.
 #include "stackbook/exercises/ex08_3_rolling_rest_angle.hpp"
 
 namespace stackbook::exercises {

@@ -1,4 +1,6 @@
 // Exercise 9.1 (your answer goes here): see ex09_1_longest_path_levels.hpp and chapter 9.
+// Implement: longestPathLevels. Delete every TODO(reader) comment once your code is in: while
+// one is left, the exercise counts as not solved and its tests do not run.
 #include "stackbook/exercises/ex09_1_longest_path_levels.hpp"
 
 namespace stackbook {

@@ -1,4 +1,6 @@
 // Exercise 9.2 (your answer goes here): see ex09_2_softened_freezing.hpp and chapter 9.
+// Implement: softenedShockPass. Delete every TODO(reader) comment once your code is in: while
+// one is left, the exercise counts as not solved and its tests do not run.
 #include "stackbook/exercises/ex09_2_softened_freezing.hpp"
 
 namespace stackbook {

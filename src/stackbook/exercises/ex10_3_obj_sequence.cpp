@@ -1,4 +1,6 @@
 // Exercise 10.3 (your answer goes here): see ex10_3_obj_sequence.hpp and chapter 10.
+// Implement: writeObjFrame and writeObjSequence. Delete every TODO(reader) comment once your
+// code is in: while one is left, the exercise counts as not solved and its tests do not run.
 #include "stackbook/exercises/ex10_3_obj_sequence.hpp"
 
 namespace stackbook {
