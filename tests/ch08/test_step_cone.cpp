@@ -1,4 +1,4 @@
-// Chapter 8: one Coulomb cone per step (Eqs. (8.13)-(8.14)). The ledger's arithmetic, and
+// Chapter 8: one Coulomb cone per step (Eq. (8.13)). The ledger's arithmetic, and
 // that bounding the pair's total impulse of the step instead of each impulse keeps
 // Coulomb's answers on the incline (slide, stick, stop) and adds no energy.
 #include <doctest/doctest.h>

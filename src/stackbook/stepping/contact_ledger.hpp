@@ -2,7 +2,7 @@
 /// \file
 /// \brief The step's contact ledger: the total impulse each touching pair has exchanged
 /// in the contact stage and the shock-propagation pass of one step, and the Coulomb cone
-/// applied to that total (\ref ch08, "One cone per step", Eqs. (8.13)-(8.14)).
+/// applied to that total (\ref ch08, "One cone per step", Eq. (8.13)).
 
 #include <array>
 #include <cstddef>
