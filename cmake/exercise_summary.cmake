@@ -1,6 +1,7 @@
 # The last CTest entry of the exercises preset ("exercises/solved"): counts the exercises
 # whose entries recorded "solved" in STATUS_DIR and prints "N of M exercises solved".
 #   cmake -DSTATUS_DIR=<dir> -DEXERCISES="1.1,1.2,..." -P exercise_summary.cmake
+cmake_minimum_required(VERSION 3.25)
 string(REPLACE "," ";" EXERCISES "${EXERCISES}")
 set(solved 0)
 set(total 0)

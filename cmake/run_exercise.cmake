@@ -8,6 +8,7 @@
 # comment), and does not run the tests. Once the comments are gone it runs the exercise's
 # test cases ("Exercise N.M: ...") and passes when they all pass. Either way it records
 # solved or unsolved in STATUS_DIR for the count that exercises/solved prints.
+cmake_minimum_required(VERSION 3.25)
 foreach(var EXERCISE STUB BINARY SUITE STATUS_DIR)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "run_exercise.cmake needs -D${var}=...")
