@@ -15,7 +15,7 @@
 using namespace stackbook;
 
 int main() {
-  std::printf("**Tumbling box (B23).** The chapter's step, and for comparison explicit Euler on "
+  std::printf("**Tumbling box (\\ref case_B23 \"B23\").** The chapter's step, and for comparison explicit Euler on "
               "Euler's equations (5.5), which integrates omega instead of L.\n\n"
               "| dt (s) | steps | largest E / E0 - 1 | change of the length of L | "
               "explicit Euler: largest E / E0 - 1 | explicit Euler: change of the length of L |\n"

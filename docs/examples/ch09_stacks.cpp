@@ -206,7 +206,7 @@ void passAsContactTable() {
                             {"pyramid, base 20, 0.3 s", "mirror error (m)"},
                             {"pyramid, base 20, 0.3 s", "largest displacement (m)"},
                             {"seesaw, 0.3 s", "plank angle (rad)"},
-                            {"tilted stack (A19), 2 s", "top box drop (m)"},
+                            {"tilted stack (\\ref case_A19 \"A19\"), 2 s", "top box drop (m)"},
                             {"A-frame, mu 0.25 (stands), 2 s", "largest card displacement (m)"},
                             {"A-frame, mu 0.22 (falls), 2 s", "largest card displacement (m)"}};
   for (int r = 0; r < 8; ++r) {
@@ -220,17 +220,17 @@ void passAsContactTable() {
 }  // namespace
 
 int main() {
-  std::printf("#### Tall stacks (B14)\n\n");
+  std::printf("#### Tall stacks (\\ref case_B14 \"B14\")\n\n");
   stacksTable();
-  std::printf("#### Heavy on light (B4)\n\n");
+  std::printf("#### Heavy on light (\\ref case_B4 \"B4\")\n\n");
   heavyTable();
-  std::printf("#### The plank on two stacks (B17)\n\n");
+  std::printf("#### The plank on two stacks (\\ref case_B17 \"B17\")\n\n");
   plankTable();
-  std::printf("#### The card A-frame (A17)\n\n");
+  std::printf("#### The card A-frame (\\ref case_A17 \"A17\")\n\n");
   cardsTable();
-  std::printf("#### The tilted stack (A19)\n\n");
+  std::printf("#### The tilted stack (\\ref case_A19 \"A19\")\n\n");
   tiltedTable();
-  std::printf("#### The pyramid (B15) and the cost of each stage\n\n");
+  std::printf("#### The pyramid (\\ref case_B15 \"B15\") and the cost of each stage\n\n");
   pyramidTables();
   std::printf("\n#### The pass as the contact stage\n\n");
   passAsContactTable();
