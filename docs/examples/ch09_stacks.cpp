@@ -220,17 +220,17 @@ void passAsContactTable() {
 }  // namespace
 
 int main() {
-  std::printf("#### Tall stacks (\\ref case_B14 \"B14\")\n\n");
+  std::printf("#### Tall stacks\n\nValidation case \\ref case_B14 \"B14\".\n\n");
   stacksTable();
-  std::printf("#### Heavy on light (\\ref case_B4 \"B4\")\n\n");
+  std::printf("#### Heavy on light\n\nValidation case \\ref case_B4 \"B4\".\n\n");
   heavyTable();
-  std::printf("#### The plank on two stacks (\\ref case_B17 \"B17\")\n\n");
+  std::printf("#### The plank on two stacks\n\nValidation case \\ref case_B17 \"B17\".\n\n");
   plankTable();
-  std::printf("#### The card A-frame (\\ref case_A17 \"A17\")\n\n");
+  std::printf("#### The card A-frame\n\nValidation case \\ref case_A17 \"A17\".\n\n");
   cardsTable();
-  std::printf("#### The tilted stack (\\ref case_A19 \"A19\")\n\n");
+  std::printf("#### The tilted stack\n\nValidation case \\ref case_A19 \"A19\".\n\n");
   tiltedTable();
-  std::printf("#### The pyramid (\\ref case_B15 \"B15\") and the cost of each stage\n\n");
+  std::printf("#### The pyramid and the cost of each stage\n\nValidation case \\ref case_B15 \"B15\".\n\n");
   pyramidTables();
   std::printf("\n#### The pass as the contact stage\n\n");
   passAsContactTable();
