@@ -78,7 +78,7 @@ int main() {
   slideErrors<2>(SlipDirectionRule::RelativeVelocity, "GBF (u_t)");
   slideErrors<3>(SlipDirectionRule::RelativeVelocity, "GBF (u_t)");
   slideErrors<3>(SlipDirectionRule::Blended, "Blended (chapter 3)");
-  std::printf("\nA1 in 3D, 1000 steps of GBF's order (unit box: 98 surface samples), with GBF's "
+  std::printf("\n\\ref case_A1 \"A1\" in 3D, 1000 steps of GBF's order (unit box: 98 surface samples), with GBF's "
               "ramp e_k = -1 + k/10 and with e_k = 0 in all ten sweeps:\n\n"
               "| schedule | stage | sweeps | impulses | frictionless | sticking | sliding | "
               "pair caps hit | phi queries | wall ms |\n|---|---|---|---|---|---|---|---|---|---|\n");
