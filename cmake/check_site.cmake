@@ -8,7 +8,7 @@
 # 2. No page shows raw TeX (\f$, \f[, \_form#), unprocessed Doxygen commands (\ref, \snippet,
 #    \include, \anchor) or Doxygen's warning text.
 # 3. Every chapter page (chNN.html) has its previous/next links at the top and the bottom,
-#    and, with REQUIRE_FIGURES, at least two SVG figures (<img> or <object>).
+#    and, with REQUIRE_FIGURES, at least two SVG figures (<img>, <object> or <iframe>).
 # 4. No validation-case code (A2, B15, A2b) in a chapter's prose without its link: codes
 #    inside links, code spans, listings and formulas are fine.
 # 5. Every `ctest --preset P ... -L X` or `-R X` command in the chapters, the docs pages and
@@ -145,7 +145,8 @@ foreach(page IN LISTS chapter_pages appendix_pages)
   if(nav_count LESS 2)
     problem("${page}: previous/next links at the top and the bottom expected, found ${nav_count}")
   endif()
-  string(REGEX MATCHALL "<(img|object)[^>]*\\.svg" figures "${html}")
+  # <img>/<object>: \image html and the htmlonly figures; <iframe>: \dotfile (Graphviz).
+  string(REGEX MATCHALL "<(img|object|iframe)[^>]*\\.svg" figures "${html}")
   list(LENGTH figures figure_count)
   list(FIND chapter_pages "${page}" is_chapter)
   if(REQUIRE_FIGURES AND NOT is_chapter EQUAL -1 AND figure_count LESS 2)
