@@ -245,6 +245,7 @@ TriangleMesh parseObjMesh(const std::string& text, const std::string& sourceName
   }
   if (settings.dropUnusedVertices) dropUnusedVertices(mesh);
   if (settings.validate) validateMesh<3>(mesh, sourceName, settings.validation);
+  if (settings.validate && settings.rejectSelfIntersections) rejectSelfIntersections(mesh, sourceName);
   return mesh;
 }
 // [parse_obj_mesh]

@@ -30,6 +30,9 @@ struct ObjLoadSettings {
   bool validate = true;
   /// Settings of that validation.
   MeshValidationSettings validation;
+  /// With validate: also reject a surface that passes through itself (two overlapping
+  /// parts), by findSelfIntersections().
+  bool rejectSelfIntersections = true;
 };
 // [obj_load_settings]
 
