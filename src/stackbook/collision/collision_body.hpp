@@ -76,7 +76,14 @@ Aabb<D> worldBounds(const Shape<D>& shape, const Pose<D>& pose) {
   const Aabb<D> local = shape.bounds();
   if (local.isEmpty()) return local;
   const Mat<D> R = rotationMatrix<D>(pose.orientation);
-  const Vec<D> centre = pose.toWorld(local.center());
+  // x + R c; in 2D with the R above (Eigen rebuilds it on every rotation of a vector, with
+  // the same bits), in 3D by the quaternion as Pose::toWorld() does.
+  Vec<D> centre;
+  if constexpr (D == 2) {
+    centre = pose.position + R * local.center();
+  } else {
+    centre = pose.toWorld(local.center());
+  }
   const Vec<D> half = R.cwiseAbs() * Vec<D>(0.5 * local.extent());  // Eq. (7.8)
   return Aabb<D>{Vec<D>(centre - half), Vec<D>(centre + half)};
 }

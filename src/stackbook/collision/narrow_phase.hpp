@@ -57,6 +57,34 @@ template <int D>
   throw std::domain_error(msg.str());
 }
 
+// [pose_with_matrix]
+/// Pose::toWorld() and Pose::directionToWorld() with the pose's rotation matrix R already
+/// at hand. In 2D Eigen's rotation of a vector is R v with R rebuilt from the angle (a sine
+/// and a cosine) on every call, so R v with the R the caller holds gives the same bits at
+/// no trigonometric cost. In 3D the quaternion's own formula rounds differently from R v,
+/// so it is kept: the result is bit for bit what the pose computes.
+template <int D>
+Vec<D> poseToWorld(const Pose<D>& pose, const Mat<D>& R, const Vec<D>& p) {
+  if constexpr (D == 2) {
+    return pose.position + R * p;
+  } else {
+    (void)R;
+    return pose.toWorld(p);
+  }
+}
+
+template <int D>
+Vec<D> poseDirectionToWorld(const Pose<D>& pose, const Mat<D>& R, const Vec<D>& d) {
+  if constexpr (D == 2) {
+    (void)pose;
+    return R * d;
+  } else {
+    (void)R;
+    return pose.directionToWorld(d);
+  }
+}
+// [pose_with_matrix]
+
 }  // namespace detail
 
 /// Narrow-phase knobs. \ref ch07
@@ -118,9 +146,9 @@ void appendSamplesInside(const CollisionBody<D>& owner, int ownerIndex,
     if (!(phi < 0.0)) continue;                                         // Eq. (7.1)
     ++found;
     InterferenceSample<D> sample;
-    sample.point = owner.pose.toWorld(samples[k]);
+    sample.point = detail::poseToWorld<D>(owner.pose, RA, samples[k]);
     sample.depth = phi;
-    sample.normal = penetrated.pose.directionToWorld(shapeB.normal(xB));  // Eq. (7.3)
+    sample.normal = detail::poseDirectionToWorld<D>(penetrated.pose, RB, shapeB.normal(xB));  // Eq. (7.3)
     sample.owner = ownerIndex;
     sample.other = penetratedIndex;
     sample.sampleIndex = static_cast<int>(k);
@@ -204,6 +232,128 @@ std::optional<InterferenceSample<D>> deepestApproachingSample(
   return best;
 }
 // [deepest_approaching]
+
+// [deepest_approaching_lazy]
+/// A sample found inside the other body, before its world point and normal are computed:
+/// what deepestApproachingInPair() sorts by depth.
+template <int D>
+struct InterferenceCandidate {
+  Vec<D> inPenetrated = Vec<D>::Zero();  ///< the sample in the penetrated body's frame (x_B)
+  double depth = 0.0;                    ///< phi there, < 0
+  int order = 0;                         ///< position in pairInterference()'s sample order
+  int sampleIndex = -1;                  ///< index in the owner's surfaceSamples()
+  bool firstOwns = true;                 ///< owner is pair.first (else pair.second)
+};
+
+namespace detail {
+
+/// Appends the candidates of one direction, counting the same work as appendSamplesInside()
+/// and with the same phi queries in the same order.
+template <int D>
+void appendCandidatesInside(const CollisionBody<D>& owner, const Mat<D>& RA, const CollisionBody<D>& penetrated,
+                            const Mat<D>& RB, int penetratedIndex, bool firstOwns,
+                            std::vector<InterferenceCandidate<D>>& out,
+                            const NarrowPhaseSettings& settings, DetectionCounters* counters) {
+  const Shape<D>& shapeB = *penetrated.shape;
+  const Aabb<D> boxB = shapeB.bounds().inflated(settings.cullMargin);
+  const Mat<D> M = RB.transpose() * RA;
+  const Vec<D> t = RB.transpose() * Vec<D>(owner.pose.position - penetrated.pose.position);
+  const std::vector<Vec<D>>& samples = owner.shape->surfaceSamples();
+  std::int64_t culled = 0, queries = 0, found = 0;
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const Vec<D> xB = M * samples[k] + t;                               // Eq. (7.2)
+    if (settings.cullByBounds && !boxB.contains(xB)) {                  // Eq. (7.7)
+      ++culled;
+      continue;
+    }
+    ++queries;
+    const double phi = shapeB.signedDistance(xB);
+    if (std::isnan(phi)) throwNanDistance<D>(shapeB, xB, penetratedIndex);
+    if (!(phi < 0.0)) continue;                                         // Eq. (7.1)
+    ++found;
+    out.push_back(InterferenceCandidate<D>{xB, phi, static_cast<int>(out.size()), static_cast<int>(k), firstOwns});
+  }
+  if (counters != nullptr) {
+    counters->samplesTransformed += static_cast<std::int64_t>(samples.size());
+    counters->samplesCulled += culled;
+    counters->phiQueries += queries;
+    counters->interferenceSamples += found;
+  }
+}
+
+}  // namespace detail
+
+/// deepestApproachingSample(pairInterference(bodies, pair)) without the normals and world
+/// points of the samples it does not choose: the candidates are found as pairInterference()
+/// finds them (same phi queries, same counters), ordered by depth with ties in sample
+/// order, and the normal and the approach test (Eqs. (7.3)-(7.5)) are evaluated in that
+/// order until the first sample that approaches. That sample is the deepest approaching
+/// one, and among equally deep ones the first in sample order, exactly as Eq. (7.6) and
+/// its tie rule pick it, with the same bits: each value is computed by the same operations.
+/// `scratch` holds the candidates (reused across calls, so no allocation once it has grown).
+/// The bodies must have shapes and finite poses (the caller checks them once). \ref ch07
+template <int D>
+std::optional<InterferenceSample<D>> deepestApproachingInPair(
+    const std::vector<CollisionBody<D>>& bodies, const BodyPair& pair, const NarrowPhaseSettings& settings,
+    DetectionCounters* counters, std::vector<InterferenceCandidate<D>>& scratch) {
+  const int n = static_cast<int>(bodies.size());
+  if (pair.first < 0 || pair.first >= n || pair.second < 0 || pair.second >= n || pair.first == pair.second) {
+    std::ostringstream msg;
+    msg << "deepestApproachingInPair: pair (" << pair.first << ", " << pair.second
+        << ") must name two different bodies among " << n;
+    throw std::invalid_argument(msg.str());
+  }
+  const CollisionBody<D>& a = bodies[static_cast<std::size_t>(pair.first)];
+  const CollisionBody<D>& b = bodies[static_cast<std::size_t>(pair.second)];
+  // pairInterference()'s checks, once for the pair.
+  if (a.shape == nullptr || b.shape == nullptr || a.body == nullptr || b.body == nullptr) {
+    std::ostringstream msg;
+    msg << "deepestApproachingInPair: body " << (a.shape == nullptr || a.body == nullptr ? pair.first : pair.second)
+        << " has no Shape or no RigidBody";
+    throw std::invalid_argument(msg.str());
+  }
+  if (!std::isfinite(settings.cullMargin) || settings.cullMargin < 0.0) {
+    std::ostringstream msg;
+    msg << "appendSamplesInside: settings.cullMargin must be finite and >= 0, got " << settings.cullMargin;
+    throw std::invalid_argument(msg.str());
+  }
+  detail::checkPose<D>(a.pose, pair.first, "appendSamplesInside");
+  detail::checkPose<D>(b.pose, pair.second, "appendSamplesInside");
+  // Each body's rotation matrix once per pair (pairInterference() builds each twice).
+  const Mat<D> Ra = rotationMatrix<D>(a.pose.orientation);
+  const Mat<D> Rb = rotationMatrix<D>(b.pose.orientation);
+  scratch.clear();
+  detail::appendCandidatesInside<D>(a, Ra, b, Rb, pair.second, true, scratch, settings, counters);
+  detail::appendCandidatesInside<D>(b, Rb, a, Ra, pair.first, false, scratch, settings, counters);
+  if (counters != nullptr) ++counters->pairQueries;
+  // Insertion sort by (depth, order): a handful of candidates per pair, no allocation.
+  for (std::size_t i = 1; i < scratch.size(); ++i) {
+    InterferenceCandidate<D> c = scratch[i];
+    std::size_t j = i;
+    for (; j > 0 && (c.depth < scratch[j - 1].depth); --j) scratch[j] = scratch[j - 1];
+    scratch[j] = c;
+  }
+  for (const InterferenceCandidate<D>& c : scratch) {
+    const CollisionBody<D>& owner = c.firstOwns ? a : b;
+    const CollisionBody<D>& other = c.firstOwns ? b : a;
+    InterferenceSample<D> s;
+    const Mat<D>& Rowner = c.firstOwns ? Ra : Rb;
+    const Mat<D>& Rother = c.firstOwns ? Rb : Ra;
+    s.point = detail::poseToWorld<D>(owner.pose, Rowner,
+                                     owner.shape->surfaceSamples()[static_cast<std::size_t>(c.sampleIndex)]);
+    s.depth = c.depth;
+    s.normal = detail::poseDirectionToWorld<D>(other.pose, Rother, other.shape->normal(c.inPenetrated));  // Eq. (7.3)
+    s.owner = c.firstOwns ? pair.first : pair.second;
+    s.other = c.firstOwns ? pair.second : pair.first;
+    s.sampleIndex = c.sampleIndex;
+    const Vec<D> rOwner = s.point - owner.pose.position;
+    const Vec<D> rOther = s.point - other.pose.position;
+    const Vec<D> u = owner.body->pointVelocity(rOwner) - other.body->pointVelocity(rOther);  // Eq. (7.4)
+    if (u.dot(s.normal) < 0.0) return s;                                                      // Eq. (7.5)
+  }
+  return std::nullopt;
+}
+// [deepest_approaching_lazy]
 
 /// The samples of one pair that interfere, with the pair they belong to.
 template <int D>

@@ -61,6 +61,7 @@ ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings
   const std::vector<BodyPair> candidates = sweepAndPrune<D>(views, broad, counters);
 
   std::vector<ContactPair> edges;
+  std::vector<InterferenceCandidate<D>> scratch;  // reused by every query below
   // One candidate pair is tested twice, each body advanced in turn: bound 2 * pairs.
   for (const BodyPair& pair : candidates) {
     for (const int p : {pair.first, pair.second}) {
@@ -70,9 +71,11 @@ ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings
       const CollisionBody<D> old = views[k];
       views[k] = collisionBodyAt<D>(advanced[k], *world.shapes[k],
                                     predictPose<D>(advanced[k], settings.dt));  // x_p + dt (v_p + dt a_p)
-      const std::vector<InterferenceSample<D>> samples =
-          pairInterference<D>(views, pair, settings.narrow, counters);
-      if (deepestApproachingSample<D>(samples, views)) edges.push_back(ContactPair{q, p});
+      // Whether any sample approaches: the lazy search of chapter 7 answers it with the
+      // normals of the samples it tests only.
+      if (deepestApproachingInPair<D>(views, pair, settings.narrow, counters, scratch)) {
+        edges.push_back(ContactPair{q, p});
+      }
       views[k] = old;
     }
   }

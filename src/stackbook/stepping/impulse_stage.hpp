@@ -101,11 +101,18 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
                 const StageSpec& spec, int sweep, double dt, const StepSettings& settings,
                 StageCounters& counters) {
   int applied = 0;
+  // The candidates of the lazy deepest-sample search, kept across calls (one buffer per
+  // thread), so that a pair query allocates nothing once the buffer has grown.
+  thread_local std::vector<InterferenceCandidate<D>> scratch;
   for (int iteration = 0; iteration < spec.pairIterations; ++iteration) {
-    const std::vector<InterferenceSample<D>> samples =
-        pairInterference<D>(views, pair, settings.detection.narrow, &counters.detection);
+    // GBF's rule needs normals only until the deepest approaching sample is found: the
+    // lazy search picks the same sample with the same bits (chapter 7). The centre rule
+    // needs every sample's normal.
     const std::optional<InterferenceSample<D>> point =
-        impulsePoint<D>(samples, views, settings.impulsePoint);  // Eqs. (7.6), (8.10)
+        settings.impulsePoint.rule == ImpulsePointRule::Deepest
+            ? deepestApproachingInPair<D>(views, pair, settings.detection.narrow, &counters.detection, scratch)
+            : impulsePoint<D>(pairInterference<D>(views, pair, settings.detection.narrow, &counters.detection),
+                              views, settings.impulsePoint);  // Eqs. (7.6), (8.10)
     if (!point) return applied;
     const InterferenceSample<D>& s = *point;
     RigidBody<D>& owner = world.bodies[static_cast<std::size_t>(s.owner)];
