@@ -8,6 +8,8 @@
 #   nlohmann-json3-dev, libcli11-dev, libtinygltf-dev, libjs-three   the simulator: scene
 #       files (JSON), the command line, animated glTF output and its offline viewer page
 #   doxygen, graphviz, libjs-mathjax   the course site, with math typeset offline
+#   libbox2d-dev, libbullet-dev   the peers of bench/peers_bench (Box2D 2.4, Bullet 3), optional:
+#       without them the benchmark runs stackbook alone
 set -e
 if [ "$(id -u)" -eq 0 ]; then SUDO=""; else SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
@@ -15,5 +17,5 @@ $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
   g++ cmake make ccache libeigen3-dev doctest-dev libtinyobjloader-dev libassimp-dev \
   nlohmann-json3-dev libcli11-dev libtinygltf-dev libjs-three \
-  doxygen graphviz libjs-mathjax >/dev/null
+  doxygen graphviz libjs-mathjax libbox2d-dev libbullet-dev >/dev/null
 echo "stackbook: Debian packages installed."

@@ -1,0 +1,41 @@
+#pragma once
+// The box scenes every engine runs (peers_bench): one engine-neutral description of each
+// (the ground slab and the boxes, their sizes, poses and masses, friction, gravity, step),
+// from which the stackbook, Box2D and Bullet adapters build the same geometry.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace peers {
+
+/// One box: full side lengths, centre (the last axis is up: y in 2D, z in 3D; z = 0 in 2D),
+/// mass (0: static).
+struct BoxSpec {
+  Eigen::Vector3d size = Eigen::Vector3d::Ones();
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double mass = 1.0;
+  bool isStatic() const { return mass == 0.0; }
+};
+
+/// A scene of boxes: body 0 is the static ground slab whose top face is up = 0.
+struct BoxScene {
+  std::string name;         ///< e.g. "stack2d_10"
+  std::string description;  ///< e.g. "2D stack of 10 boxes"
+  int dimension = 2;
+  double gravity = 10.0;    ///< m/s^2, down the last axis
+  double friction = 0.6;    ///< the friction of every contact (each engine's mixing rule accounted for)
+  double dt = 1.0 / 60.0;
+  std::vector<BoxSpec> boxes;  ///< boxes[0] is the ground
+  /// The index of the top box (the one whose sag is reported).
+  int top() const;
+};
+
+/// n unit boxes in a column, exactly touching, on a 200 m ground slab 1 m thick.
+BoxScene stack(int dimension, int n);
+/// A 2D pyramid of unit boxes: `base` in the bottom row, one fewer per row, exactly touching.
+BoxScene pyramid2d(int base);
+/// A 3D pyramid of unit cubes: square layers levels x levels, (levels-1)^2, ..., 1.
+BoxScene pyramid3d(int levels);
+
+}  // namespace peers

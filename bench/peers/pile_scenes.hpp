@@ -1,0 +1,23 @@
+#pragma once
+// The piles of nonconvex bodies that peers_bench and pile_scaling_bench time once formed:
+// the bundled 1000-body piles (scenes/pile_1000_2d_full.json and pile_1000_3d_full.json)
+// with their arrays resized by overrides, so that every N uses the same body kinds.
+#include <string>
+
+#include "engine.hpp"
+
+namespace peers {
+
+/// The folder of the bundled scenes.
+std::string scenesDir();
+
+/// A 2D pile of n bodies (n a multiple of 4, n/4 <= 250 or n = 50) of the bundled pile's kinds
+/// (L, U, star, bone: n/4 each), laid out as that scene lays out its 1000 (rows of up to 25,
+/// 0.75 m apart, one kind above the other), poured into its bin.
+PileSpec pile2d(int n, const std::string& cacheDir);
+
+/// A 3D pile of n in {8, 100, 1000} bodies of the bundled 3D pile's kinds (torus, cup, bone,
+/// L: n/4 each), in layers of up to 10 x 5, poured into its bin.
+PileSpec pile3d(int n, const std::string& cacheDir);
+
+}  // namespace peers
