@@ -66,6 +66,12 @@ std::vector<Entry> catalogue(bool tiny, const std::string& cache) {
   box("pyramid2d_100", pyramid2d(tiny ? 5 : 100));
   box("stack3d_10", stack(3, tiny ? 2 : 10));
   box("pyramid3d_8", pyramid3d(tiny ? 2 : 8));
+  // The incline (30 degrees, mu 0.3): 2 s slide 4.8 m, well within the ground.
+  box("incline2d", incline(2, 30.0, 0.3));
+  box("incline3d", incline(3, 30.0, 0.3));
+  for (Entry& x : e) {
+    if (x.boxes.tilt != 0.0) x.seconds = tiny ? 0.1 : 2.0;
+  }
   const auto pile = [&](std::string key, PileSpec p, double seconds, bool byDefault) {
     Entry x;
     x.key = std::move(key);
@@ -161,7 +167,7 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
-  // --seconds T sets every box scene (piles keep their own), NAME=T one scene; --reps alike
+  // --seconds T sets every box scene (piles and inclines keep their own), NAME=T one scene; --reps alike
   // (R alone sets every scene).
   const auto perScene = [&](const std::vector<std::string>& args, const char* option, bool boxesOnly,
                             const std::function<void(Entry&, double)>& set) {
@@ -171,7 +177,7 @@ int main(int argc, char** argv) {
       const double value = std::atof(eq == std::string::npos ? s.c_str() : s.c_str() + eq + 1);
       bool matched = false;
       for (Entry& e : scenes) {
-        if (name.empty() ? !(boxesOnly && e.isPile) : e.key == name) {
+        if (name.empty() ? !(boxesOnly && (e.isPile || e.boxes.tilt != 0.0)) : e.key == name) {
           set(e, value);
           matched = true;
         }
@@ -266,11 +272,18 @@ int main(int argc, char** argv) {
       for (Column& c : columns) c.row.runs.push_back(runInChild(c.make, steps));
     }
     double peerMs = -1.0;
+    double peerMedian = -1.0;
     for (const Column& c : columns) {
-      if (c.row.isPeer) peerMs = minMsPerStep(c.row);
+      if (c.row.isPeer) {
+        peerMs = minMsPerStep(c.row);
+        peerMedian = medianMsPerStep(c.row);
+      }
     }
     for (Column& c : columns) {
-      if (!c.row.isPeer && peerMs > 0.0 && minMsPerStep(c.row) > 0.0) c.row.ratio = minMsPerStep(c.row) / peerMs;
+      if (!c.row.isPeer && peerMs > 0.0 && minMsPerStep(c.row) > 0.0) {
+        c.row.ratio = minMsPerStep(c.row) / peerMs;
+        c.row.medianRatio = medianMsPerStep(c.row) / peerMedian;
+      }
       printTableRow(stdout, c.row);
       if (csv) printCsvRow(csv, c.row);
       for (const RunResult& r : c.row.runs) failures += r.ok ? 0 : 1;

@@ -16,7 +16,8 @@ namespace {
 
 class Box2dEngine final : public BoxEngine {
  public:
-  explicit Box2dEngine(const BoxScene& scene) : BoxEngine(scene), world_(b2Vec2(0.0f, static_cast<float>(-scene.gravity))) {
+  explicit Box2dEngine(const BoxScene& scene) : BoxEngine(scene),
+        world_(b2Vec2(static_cast<float>(scene.gravityVector().x()), static_cast<float>(scene.gravityVector().y()))) {
     world_.SetAllowSleeping(false);
     for (const BoxSpec& spec : scene.boxes) {
       b2BodyDef def;
@@ -35,7 +36,10 @@ class Box2dEngine final : public BoxEngine {
     }
   }
 
-  void step() override { world_.Step(static_cast<float>(scene_.dt), 8, 3); }
+  void step() override {
+    ++steps_;
+    world_.Step(static_cast<float>(scene_.dt), 8, 3);
+  }
 
   std::vector<BodyState> states() const override {
     std::vector<BodyState> out;

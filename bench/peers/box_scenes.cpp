@@ -1,6 +1,10 @@
 // The box scenes of peers_bench (box_scenes.hpp).
 #include "box_scenes.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <cstdio>
 #include <string>
 
 namespace peers {
@@ -42,6 +46,28 @@ int BoxScene::top() const {
     }
   }
   return best;
+}
+
+Eigen::Vector3d BoxScene::gravityVector() const {
+  Eigen::Vector3d g = Eigen::Vector3d::Zero();
+  g.x() = gravity * std::sin(tilt);
+  g[dimension - 1] = -gravity * std::cos(tilt);
+  return g;
+}
+
+double BoxScene::inclineDistance(double t) const {
+  const double a = gravity * std::sin(tilt) - friction * gravity * std::cos(tilt);
+  return std::max(0.0, 0.5 * a * t * t);
+}
+
+BoxScene incline(int dimension, double degrees, double mu) {
+  char title[96];
+  std::snprintf(title, sizeof title, "%dD block on a %g degree incline, mu %g", dimension, degrees, mu);
+  BoxScene s = withGround(dimension, "incline" + std::to_string(dimension) + "d", title);
+  s.tilt = degrees * std::numbers::pi / 180.0;
+  s.friction = mu;
+  s.boxes.push_back(unitBox(dimension, 0.0, 0.0, 0.5));
+  return s;
 }
 
 BoxScene stack(int dimension, int n) {

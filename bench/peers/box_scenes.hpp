@@ -23,18 +23,29 @@ struct BoxScene {
   std::string name;         ///< e.g. "stack2d_10"
   std::string description;  ///< e.g. "2D stack of 10 boxes"
   int dimension = 2;
-  double gravity = 10.0;    ///< m/s^2, down the last axis
+  double gravity = 10.0;    ///< m/s^2, down the last axis unless tilted
+  /// Gravity turned by this angle (radians) from down the last axis towards +x: a block on the
+  /// flat ground then slides as on an incline of this slope (0: no tilt).
+  double tilt = 0.0;
   double friction = 0.6;    ///< the friction of every contact (each engine's mixing rule accounted for)
   double dt = 1.0 / 60.0;
   std::vector<BoxSpec> boxes;  ///< boxes[0] is the ground
   /// The index of the top box (the one whose sag is reported).
   int top() const;
+  /// The gravity vector (3D; 2D uses x and y).
+  Eigen::Vector3d gravityVector() const;
+  /// The closed-form distance a block slides along +x after t seconds when gravity is tilted:
+  /// (g sin(theta) - mu g cos(theta)) t^2 / 2, or 0 when friction holds it (Eq. (10.5)).
+  double inclineDistance(double t) const;
 };
 
 /// n unit boxes in a column, exactly touching, on a 200 m ground slab 1 m thick.
 BoxScene stack(int dimension, int n);
 /// A 2D pyramid of unit boxes: `base` in the bottom row, one fewer per row, exactly touching.
 BoxScene pyramid2d(int base);
+/// A unit box resting on the ground under gravity tilted by `degrees`, with friction mu: an
+/// incline whose answer is known (inclineDistance()).
+BoxScene incline(int dimension, double degrees, double mu);
 /// A 3D pyramid of unit cubes: square layers levels x levels, (levels-1)^2, ..., 1.
 BoxScene pyramid3d(int levels);
 

@@ -22,7 +22,8 @@ class BulletEngine final : public BoxEngine {
       : BoxEngine(scene),
         dispatcher_(&configuration_),
         world_(&dispatcher_, &broadphase_, &solver_, &configuration_) {
-    world_.setGravity(btVector3(0, 0, static_cast<btScalar>(-scene.gravity)));
+    const Eigen::Vector3d g = scene.gravityVector();
+    world_.setGravity(btVector3(static_cast<btScalar>(g.x()), static_cast<btScalar>(g.y()), static_cast<btScalar>(g.z())));
     const auto mu = static_cast<btScalar>(std::sqrt(scene.friction));
     for (const BoxSpec& spec : scene.boxes) {
       const btVector3 half(static_cast<btScalar>(0.5 * spec.size.x()), static_cast<btScalar>(0.5 * spec.size.y()),
@@ -49,7 +50,10 @@ class BulletEngine final : public BoxEngine {
     for (auto& b : bodies_) world_.removeRigidBody(b.get());
   }
 
-  void step() override { world_.stepSimulation(static_cast<btScalar>(scene_.dt), 0); }
+  void step() override {
+    ++steps_;
+    world_.stepSimulation(static_cast<btScalar>(scene_.dt), 0);
+  }
 
   std::vector<BodyState> states() const override {
     std::vector<BodyState> out;

@@ -35,14 +35,21 @@ class Engine {
 class BoxEngine : public Engine {
  public:
   explicit BoxEngine(BoxScene scene) : scene_(std::move(scene)) {}
-  void startTiming() override { start_ = states(); }
-  Accuracy accuracy() const override { return boxAccuracy(scene_, start_, states()); }
+  void startTiming() override {
+    start_ = states();
+    steps_ = 0;
+  }
+  Accuracy accuracy() const override {
+    return boxAccuracy(scene_, start_, states(), static_cast<double>(steps_) * scene_.dt);
+  }
+
   /// Every body's state (the ground first), in the scene's order.
   virtual std::vector<BodyState> states() const = 0;
 
  protected:
   BoxScene scene_;
   std::vector<BodyState> start_;
+  long steps_ = 0;  ///< steps since timing started (each adapter's step() counts them)
 };
 
 /// The two stackbook configurations of the table.

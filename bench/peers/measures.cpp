@@ -52,7 +52,7 @@ double overlap(const BoxSpec& a, const BodyState& sa, const BoxSpec& b, const Bo
 
 double boxEnergy(const BoxScene& scene, const std::vector<BodyState>& states) {
   double e = 0.0;
-  const int up = scene.dimension - 1;
+  const Eigen::Vector3d g = scene.gravityVector();
   for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
     const BoxSpec& b = scene.boxes[i];
     if (b.isStatic()) continue;
@@ -62,7 +62,7 @@ double boxEnergy(const BoxScene& scene, const std::vector<BodyState>& states) {
     if (scene.dimension == 2) inertia = Eigen::Vector3d(0.0, 0.0, (b.mass / 12.0) * (q[0] + q[1]));
     const Eigen::Vector3d wBody = s.rotation.transpose() * s.angularVelocity;
     e += 0.5 * b.mass * s.velocity.squaredNorm() + 0.5 * wBody.dot(inertia.cwiseProduct(wBody)) +
-         b.mass * scene.gravity * s.position[up];
+         -b.mass * g.dot(s.position);  // U = -m g.x
   }
   return e;
 }
@@ -93,7 +93,7 @@ double boxPenetration(const BoxScene& scene, const std::vector<BodyState>& state
 }
 
 Accuracy boxAccuracy(const BoxScene& scene, const std::vector<BodyState>& start,
-                     const std::vector<BodyState>& end) {
+                     const std::vector<BodyState>& end, double seconds) {
   Accuracy a;
   a.drift = 0.0;
   a.maxSpeed = 0.0;
@@ -112,6 +112,11 @@ Accuracy boxAccuracy(const BoxScene& scene, const std::vector<BodyState>& start,
   a.sag = start[top].position[up] - end[top].position[up];
   a.penetration = boxPenetration(scene, end);
   a.energyChange = boxEnergy(scene, end) - boxEnergy(scene, start);
+  if (scene.tilt != 0.0) {
+    a.inclineDistance = scene.inclineDistance(seconds);
+    const double slid = end[top].position.x() - start[top].position.x();
+    a.inclineError = a.inclineDistance > 0.0 ? slid / a.inclineDistance - 1.0 : slid;
+  }
   return a;
 }
 

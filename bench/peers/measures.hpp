@@ -24,6 +24,10 @@ struct Accuracy {
   double maxSpeed = -1.0;     ///< largest |v| + |omega| * half-diagonal (m/s)
   double penetration = -1.0;  ///< deepest overlap of two bodies (m)
   double energyChange = 0.0;  ///< E_end - E_start (J), kinetic + potential
+  /// Incline scenes: how far the block slid along x, over the closed form, minus 1 (and the
+  /// closed form itself); not measured elsewhere.
+  double inclineError = -2.0;
+  double inclineDistance = -1.0;
   bool finite = true;
 };
 
@@ -36,8 +40,8 @@ double boxEnergy(const BoxScene& scene, const std::vector<BodyState>& states);
 double boxPenetration(const BoxScene& scene, const std::vector<BodyState>& states);
 
 /// Drift, sag, speed, penetration and energy change of a box scene between two states
-/// (every body, the ground first, in the scene's order).
+/// `seconds` apart (every body, the ground first, in the scene's order).
 Accuracy boxAccuracy(const BoxScene& scene, const std::vector<BodyState>& start,
-                     const std::vector<BodyState>& end);
+                     const std::vector<BodyState>& end, double seconds);
 
 }  // namespace peers

@@ -18,6 +18,7 @@ struct Row {
   long steps = 0;
   std::vector<RunResult> runs;  ///< one per repetition
   double ratio = -1.0;          ///< this row's min ms/step over the peer's (stackbook rows)
+  double medianRatio = -1.0;    ///< the same for the median steps
 };
 
 /// Min over repetitions of each run's mean ms/step, and the median step over all runs.

@@ -18,8 +18,7 @@ class StackbookBoxes final : public BoxEngine {
   StackbookBoxes(const BoxScene& scene, StackbookConfig config) : BoxEngine(scene) {
     settings_ = config == StackbookConfig::PassAsContactStage ? passAsContactStage() : StepSettings{};
     settings_.dt = scene.dt;
-    world_.gravity = Vec<D>::Zero();
-    world_.gravity[D - 1] = -scene.gravity;
+    world_.gravity = scene.gravityVector().head<D>();
     const Material material{0.0, scene.friction, 0.0};  // pairs take the smaller mu: Eq. (8.4)
     for (const BoxSpec& b : scene.boxes) {
       const Vec<D> size = b.size.head<D>();
@@ -42,7 +41,10 @@ class StackbookBoxes final : public BoxEngine {
     }
   }
 
-  void step() override { counters_ += stackingStep<D>(world_, settings_); }
+  void step() override {
+    ++steps_;
+    counters_ += stackingStep<D>(world_, settings_);
+  }
 
   void startTiming() override {
     BoxEngine::startTiming();
