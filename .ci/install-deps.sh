@@ -10,6 +10,7 @@
 #   doxygen, graphviz, libjs-mathjax   the course site, with math typeset offline
 #   libbox2d-dev, libbullet-dev   the peers of bench/peers_bench (Box2D 2.4, Bullet 3), optional:
 #       without them the benchmark runs stackbook alone
+#   gnuplot-nox    the plots of `stackbook sweep` (chapter 11's figures)
 set -e
 if [ "$(id -u)" -eq 0 ]; then SUDO=""; else SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
@@ -17,5 +18,5 @@ $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
   g++ cmake make ccache libeigen3-dev doctest-dev libtinyobjloader-dev libassimp-dev \
   nlohmann-json3-dev libcli11-dev libtinygltf-dev libjs-three \
-  doxygen graphviz libjs-mathjax libbox2d-dev libbullet-dev >/dev/null
+  doxygen graphviz libjs-mathjax libbox2d-dev libbullet-dev gnuplot-nox >/dev/null
 echo "stackbook: Debian packages installed."

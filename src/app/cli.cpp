@@ -23,6 +23,7 @@
 #include "stackbook/output/viewer_html.hpp"
 #include "stackbook/scene/scene.hpp"
 #include "stackbook/scene/simulation.hpp"
+#include "stackbook/scene/sweep.hpp"
 
 namespace stackbook::app {
 namespace {
@@ -96,6 +97,9 @@ std::vector<std::string> writeOutputs(const Scene& scene, const SceneRun& run, c
         const std::string csv = (out / "trajectory.csv").string();
         writeTrajectoryCsv(r.recording, csv);
         files.push_back(csv);
+        const std::string energy = (out / "energy.csv").string();
+        writeEnergyCsv(r.recording, energy);
+        files.push_back(energy);
         if constexpr (std::is_same_v<Result, RunResult<2>>) {
           const std::string svg = (out / "animation.svg").string();
           writeAnimatedSvg(r.recording, svg);
@@ -214,6 +218,63 @@ int checkCommand(const std::string& name, const std::vector<std::string>& sets) 
   return kOk;
 }
 
+struct SweepArgs {
+  std::string spec;
+  std::string csv;
+  bool list = false;
+  bool noPlot = false;
+  int jobs = 2;
+  std::vector<std::size_t> only;
+};
+
+/// `stackbook sweep SPEC`: the grid of runs of a sweep spec (chapter 11), resumed from the
+/// CSV's rows, then the plots; `--list` prints each run as its own command line instead.
+int sweepCommand(const SweepArgs& args) {
+  SweepSpec spec;
+  std::vector<SweepRun> runs;
+  try {
+    spec = loadSweepSpec(args.spec);
+    spec.scene = resolveScene(spec.scene);
+    runs = sweepRuns(spec);
+  } catch (const SceneError& e) {
+    return reportError(e.what(), kBadInput);
+  }
+  const std::string csv =
+      args.csv.empty() ? (fs::path("stackbook-out") / "sweeps" / (spec.name + ".csv")).string() : args.csv;
+  if (args.list) {
+    for (const SweepRun& run : runs) {
+      std::cout << "stackbook sweep " << args.spec << " --csv " << csv << " --no-plot --jobs 1 --run " << run.index
+                << "\n";
+    }
+    return kOk;
+  }
+  try {
+    SweepOptions options;
+    options.csvPath = csv;
+    options.jobs = args.jobs;
+    options.only = args.only;
+    options.progress = [&](std::size_t done, std::size_t total, const SweepRow& row) {
+      std::ostringstream line;
+      line << "[" << done << "/" << total << "] run " << row.run.index << " " << row.run.knob << "="
+           << row.run.value << (row.run.config == "-" ? "" : " " + row.run.config) << ": "
+           << row.msPerSimulatedSecond << " ms per simulated s";
+      for (std::size_t k = 0; k < row.errors.size(); ++k) line << ", " << spec.errors[k].name << " " << row.errors[k];
+      std::cerr << line.str() << "\n";
+    };
+    const std::size_t made = runSweep(spec, options);
+    std::cout << spec.name << ": " << made << " runs made, " << runs.size() - made << " already in " << csv << "\n";
+    if (!args.noPlot) {
+      const std::string prefix = (fs::path(csv).parent_path() / spec.name).string();
+      for (const std::string& svg : plotSweep(spec, csv, prefix)) std::cout << "  plot " << svg << "\n";
+    }
+  } catch (const SceneError& e) {
+    return reportError(e.what(), kBadInput);
+  } catch (const std::exception& e) {
+    return reportError(e.what(), kRunFailed);
+  }
+  return kOk;
+}
+
 }  // namespace
 
 int runCli(int argc, char** argv) {
@@ -248,6 +309,17 @@ int runCli(int argc, char** argv) {
 
     CLI::App* listApp = app.add_subcommand("list", "List the bundled scenes with their descriptions");
 
+    SweepArgs sweep;
+    CLI::App* sweepApp = app.add_subcommand(
+        "sweep", "Run a sweep spec's grid of runs (chapter 11): one CSV row per run with its cost and errors, "
+                 "resumed from the rows already there, then error-against-cost plots (gnuplot)");
+    sweepApp->add_option("spec", sweep.spec, "Sweep spec file (JSON)")->required();
+    sweepApp->add_option("--csv", sweep.csv, "CSV to append rows to (default: stackbook-out/sweeps/<name>.csv)");
+    sweepApp->add_flag("--list", sweep.list, "Print each run as an independent command line and exit");
+    sweepApp->add_option("--jobs,-j", sweep.jobs, "Runs at once (default 2)")->check(CLI::Range(1, 256));
+    sweepApp->add_option("--run", sweep.only, "Only these run indices (repeatable)");
+    sweepApp->add_flag("--no-plot", sweep.noPlot, "Write the CSV only");
+
     try {
       app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -260,6 +332,7 @@ int runCli(int argc, char** argv) {
     if (runApp->parsed()) return runCommand(run, false);
     if (checkApp->parsed()) return checkCommand(checkScene, checkSets);
     if (listApp->parsed()) return listCommand();
+    if (sweepApp->parsed()) return sweepCommand(sweep);
     RunArgs demo;
     demo.scene = kDemoScene;
     std::cout << "Running the bundled demo scene \"" << kDemoScene << "\" (stackbook --help for more).\n";

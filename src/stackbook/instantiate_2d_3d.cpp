@@ -39,6 +39,10 @@ template struct SurfaceMesh<3>;
   template void advancePosition<D>(RigidBody<D>&, double);                                   \
   template Pose<D> predictPose<D>(const RigidBody<D>&, double);                              \
   template Pose<D> predictPose<D>(const RigidBody<D>&, double, const ExternalLoads<D>&);    \
+  template void advancePosition<D>(RigidBody<D>&, double, RotationUpdate);                   \
+  template Pose<D> predictPose<D>(const RigidBody<D>&, double, RotationUpdate);              \
+  template Pose<D> predictPose<D>(const RigidBody<D>&, double, const ExternalLoads<D>&,      \
+                                  RotationUpdate);                                           \
   template MassProperties<D> computeMassProperties<D>(const SurfaceMesh<D>&, double,         \
                                                       const MassPropertySettings&);          \
   template PrincipalAxes<D> principalAxes<D>(const MassProperties<D>&,                       \

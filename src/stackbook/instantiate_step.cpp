@@ -15,7 +15,8 @@ namespace stackbook {
   template int resolvePair<D>(World<D>&, std::vector<CollisionBody<D>>&, const BodyPair&,      \
                               const StageSpec&, int, double, const StepSettings&,              \
                               StageCounters&);                                                 \
-  template std::vector<CollisionBody<D>> stageViews<D>(const World<D>&, Lookahead, double);    \
+  template std::vector<CollisionBody<D>> stageViews<D>(const World<D>&, Lookahead, double,     \
+                                                       RotationUpdate);                        \
   template int sweepPairs<D>(World<D>&, std::vector<CollisionBody<D>>&,                        \
                              const std::vector<BodyPair>&, const StageSpec&, int, double,      \
                              const StepSettings&, StageCounters&);                             \

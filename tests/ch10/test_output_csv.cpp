@@ -82,8 +82,9 @@ TEST_CASE_TEMPLATE("The trajectory CSV reads back every recorded pose bit for bi
   const auto rows = parseCsv(readWhole(path));
 
   const std::vector<std::string> header =
-      D == 2 ? std::vector<std::string>{"time", "body", "name", "x", "y", "angle"}
-             : std::vector<std::string>{"time", "body", "name", "x", "y", "z", "qw", "qx", "qy", "qz"};
+      D == 2 ? std::vector<std::string>{"time", "body", "name", "x", "y", "angle", "vx", "vy", "omega"}
+             : std::vector<std::string>{"time", "body", "name", "x", "y", "z", "qw", "qx", "qy", "qz",
+                                        "vx", "vy", "vz", "wx", "wy", "wz"};
   REQUIRE(rows.size() == 1 + recording.frameCount() * recording.bodyCount());
   CHECK(rows[0] == header);
   std::size_t r = 1;

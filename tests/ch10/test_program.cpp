@@ -115,7 +115,8 @@ TEST_CASE("stackbook run writes the trajectory and the animation and the summary
   CHECK(s.at("steps") == 20);
   CHECK(s.at("bodies") == 4);
   CHECK(s.at("frames") == 3);  // t = 0, 0.01, 0.02
-  CHECK(s.at("files").size() == 3);
+  CHECK(s.at("files").size() == 4);  // trajectory.csv, energy.csv, animation.svg, summary.json
+  CHECK(lines(slurp(out / "energy.csv")) == 1 + 3);
   CHECK(s.at("effects") == nlohmann::json{"gravity", "collision", "contact", "friction"});
   // trajectory.csv: a header and 3 frames of 4 bodies.
   CHECK(lines(slurp(out / "trajectory.csv")) == 1 + 3 * 4);
@@ -132,7 +133,7 @@ TEST_CASE("stackbook run of a 3D scene writes the glTF animation and its viewer 
   const nlohmann::json s = nlohmann::json::parse(slurp(out / "summary.json"));
   CHECK(s.at("steps") == 5);
   CHECK(s.at("dt") == 0.002);
-  CHECK(s.at("files").size() == 4);
+  CHECK(s.at("files").size() == 5);  // trajectory.csv, energy.csv, animation.glb, viewer.html, summary.json
 }
 
 TEST_CASE("stackbook run prints the summary with effects and stages and energy and files") {

@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "stackbook/body/rigid_body.hpp"
+#include "stackbook/body/rotation_update.hpp"
 #include "stackbook/math/pose.hpp"
 
 namespace stackbook {
@@ -128,6 +129,38 @@ void advancePosition(RigidBody<D>& body, double dt) {
 }
 // [position_update]
 
+// [turned_orientation]
+/// The orientation a dynamic body reaches in one position update under `rule`: the
+/// exponential map at the current omega (Eqs. (5.9)-(5.11)), or in 3D the implicit midpoint
+/// rule at the current L (Eqs. (5.25)-(5.28)). In 2D omega is constant between impulses and
+/// both rules are the exponential map. A static (kinematic) body always turns by its
+/// prescribed omega.
+template <int D>
+Orientation<D> turnedOrientation(const RigidBody<D>& body, double dt, RotationUpdate rule) {
+  const Orientation<D> q = normalizedOrientation<D>(body.orientation);
+  if constexpr (D == 3) {
+    if (rule == RotationUpdate::ImplicitMidpoint && !body.isStatic()) {
+      return rotateByImplicitMidpoint(q, body.angularMomentum, body.inverseInertia, dt);
+    }
+  }
+  return rotateByAngularVelocity<D>(q, body.angularVelocity, dt);
+}
+// [turned_orientation]
+
+/// The position update with the rotation rule `rule` (\ref ch05_midpoint). With
+/// RotationUpdate::ExponentialMap it is advancePosition(body, dt), bit for bit. L is not
+/// touched by either rule, so the world angular momentum of a free body is conserved exactly.
+template <int D>
+void advancePosition(RigidBody<D>& body, double dt, RotationUpdate rule) {
+  if (rule == RotationUpdate::ExponentialMap || D == 2 || body.isStatic()) {
+    advancePosition<D>(body, dt);
+    return;
+  }
+  body.position += dt * body.velocity;                      // Eq. (5.8)
+  body.orientation = turnedOrientation<D>(body, dt, rule);  // Eqs. (5.25)-(5.28)
+  body.syncAngularVelocity();                               // Eq. (5.12)
+}
+
 // [free_step]
 /// One whole step of free motion (no collisions, no contact): Eq. (5.7), then
 /// Eqs. (5.8)-(5.12). This is symplectic (semi-implicit) Euler for the translation.
@@ -135,6 +168,14 @@ template <int D>
 void advanceFreeBody(RigidBody<D>& body, double dt, const ExternalLoads<D>& loads = {}) {
   advanceVelocity<D>(body, dt, loads);
   advancePosition<D>(body, dt);
+}
+
+/// One whole step of free motion with the rotation rule `rule`.
+template <int D>
+void advanceFreeBody(RigidBody<D>& body, double dt, const ExternalLoads<D>& loads,
+                     RotationUpdate rule) {
+  advanceVelocity<D>(body, dt, loads);
+  advancePosition<D>(body, dt, rule);
 }
 // [free_step]
 
@@ -162,6 +203,25 @@ Pose<D> predictPose(const RigidBody<D>& body, double dt, const ExternalLoads<D>&
   RigidBody<D> ahead = body;
   advanceVelocity<D>(ahead, dt, loads);
   return predictPose<D>(ahead, dt);
+}
+
+/// predictPose(body, dt) with the rotation rule `rule`: the pose advancePosition(body, dt,
+/// rule) would give. ExponentialMap gives predictPose(body, dt) bit for bit.
+template <int D>
+Pose<D> predictPose(const RigidBody<D>& body, double dt, RotationUpdate rule) {
+  if (rule == RotationUpdate::ExponentialMap || D == 2 || body.isStatic()) {
+    return predictPose<D>(body, dt);
+  }
+  return Pose<D>{body.position + dt * body.velocity, turnedOrientation<D>(body, dt, rule)};
+}
+
+/// predictPose(body, dt, loads) with the rotation rule `rule`.
+template <int D>
+Pose<D> predictPose(const RigidBody<D>& body, double dt, const ExternalLoads<D>& loads,
+                    RotationUpdate rule) {
+  RigidBody<D> ahead = body;
+  advanceVelocity<D>(ahead, dt, loads);
+  return predictPose<D>(ahead, dt, rule);
 }
 // [predict_pose]
 

@@ -87,6 +87,17 @@ Vec<D> poseDirectionToWorld(const Pose<D>& pose, const Mat<D>& R, const Vec<D>& 
 
 }  // namespace detail
 
+// [surface_query]
+/// The points of a body's surface the narrow phase tests against the other body's phi.
+enum class SurfaceQuery {
+  /// The fixed surface samples (chapter 7): 642 on a sphere, 48 on a disk by default.
+  Samples,
+  /// The samples and, for shapes that have it, the exact deepest point (Eq. (11.6)); a
+  /// strictly convex shape (sphere, disk) is tested at its deepest point alone.
+  DeepestPoint,
+};
+// [surface_query]
+
 /// Narrow-phase knobs. \ref ch07
 struct NarrowPhaseSettings {
   /// Skip phi at samples outside the penetrated body's body-frame box (Eq. (7.7)).
@@ -96,7 +107,48 @@ struct NarrowPhaseSettings {
   /// exact, since phi > 0 outside the box. An approximate phi (a grid) can be slightly
   /// negative just outside the body's box; a margin as large as its error keeps those.
   double cullMargin = 0.0;
+  /// Which surface points are tested (chapter 11): the samples only (GBF, the default), or
+  /// also the exact deepest point of every shape that has the query (Shape::deepestPoint,
+  /// the convex analytic primitives), which replaces the samples of a sphere or disk.
+  SurfaceQuery surfaceQuery = SurfaceQuery::Samples;
 };
+
+namespace detail {
+
+// [append_deepest_point]
+/// Under SurfaceQuery::DeepestPoint: the owner's exact deepest point in `penetrated`
+/// (Shape::deepestPoint), recorded like a sample (sampleIndex -2) when phi < 0 there.
+/// Returns true when that point replaces the owner's samples (a sphere or disk).
+template <int D>
+bool appendDeepestPoint(const CollisionBody<D>& owner, int ownerIndex,
+                        const CollisionBody<D>& penetrated, int penetratedIndex, const Mat<D>& M,
+                        const Vec<D>& t, std::vector<InterferenceSample<D>>& out,
+                        const NarrowPhaseSettings& settings, std::int64_t& queries,
+                        std::int64_t& found) {
+  if (settings.surfaceQuery != SurfaceQuery::DeepestPoint) return false;
+  const Shape<D>& shapeB = *penetrated.shape;
+  Vec<D> p;
+  if (!owner.shape->deepestPoint(shapeB, M, t, p)) return false;
+  const Vec<D> xB = M * p + t;  // Eq. (7.2)
+  ++queries;
+  const double phi = shapeB.signedDistance(xB);
+  if (std::isnan(phi)) throwNanDistance<D>(shapeB, xB, penetratedIndex);
+  if (phi < 0.0) {  // Eq. (7.1)
+    ++found;
+    InterferenceSample<D> sample;
+    sample.point = owner.pose.toWorld(p);
+    sample.depth = phi;
+    sample.normal = penetrated.pose.directionToWorld(shapeB.normal(xB));  // Eq. (7.3)
+    sample.owner = ownerIndex;
+    sample.other = penetratedIndex;
+    sample.sampleIndex = -2;
+    out.push_back(sample);
+  }
+  return owner.shape->deepestPointIsWholeContact();
+}
+// [append_deepest_point]
+
+}  // namespace detail
 
 // [samples_inside]
 /// One direction of the interference test: every surface sample s of `owner` is carried
@@ -134,7 +186,12 @@ void appendSamplesInside(const CollisionBody<D>& owner, int ownerIndex,
 
   const std::vector<Vec<D>>& samples = owner.shape->surfaceSamples();
   std::int64_t culled = 0, queries = 0, found = 0;
-  for (std::size_t k = 0; k < samples.size(); ++k) {
+  const std::size_t sampleCount =
+      detail::appendDeepestPoint<D>(owner, ownerIndex, penetrated, penetratedIndex, M, t, out,
+                                    settings, queries, found)
+          ? 0
+          : samples.size();
+  for (std::size_t k = 0; k < sampleCount; ++k) {
     const Vec<D> xB = M * samples[k] + t;                               // Eq. (7.2)
     if (settings.cullByBounds && !boxB.contains(xB)) {                  // Eq. (7.7)
       ++culled;
@@ -155,7 +212,7 @@ void appendSamplesInside(const CollisionBody<D>& owner, int ownerIndex,
     out.push_back(sample);
   }
   if (counters != nullptr) {
-    counters->samplesTransformed += static_cast<std::int64_t>(samples.size());
+    counters->samplesTransformed += static_cast<std::int64_t>(sampleCount);
     counters->samplesCulled += culled;
     counters->phiQueries += queries;
     counters->interferenceSamples += found;

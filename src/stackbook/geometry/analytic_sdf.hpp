@@ -69,6 +69,14 @@ struct SphereSdf {
   Aabb<D> bounds() const {
     return Aabb<D>{Vec<D>::Constant(-radius), Vec<D>::Constant(radius)};
   }
+  /// The surface point farthest along d (chapter 11's deepest-point query): r d/|d|; for
+  /// d = 0 the point on the last axis.
+  Vec<D> support(const Vec<D>& d) const {
+    const double n = d.norm();
+    return n > 0.0 ? Vec<D>(radius * d / n) : Vec<D>(radius * detail::unitAxis<D>(D - 1));
+  }
+  /// Strictly convex: the point farthest along d is unique and is the whole contact.
+  static constexpr bool strictlyConvex = true;
   std::string describe() const {
     std::ostringstream out;
     out << (D == 3 ? "sphere" : "disk") << " r = " << radius;
@@ -108,6 +116,13 @@ struct BoxSdf {
     return detail::sideOf(x[k]) * detail::unitAxis<D>(static_cast<int>(k));
   }
   Aabb<D> bounds() const { return Aabb<D>{Vec<D>(-halfExtents), halfExtents}; }
+  /// The surface point farthest along d: the corner h * sign(d) (a zero component takes +).
+  Vec<D> support(const Vec<D>& d) const {
+    Vec<D> p = halfExtents;
+    for (int k = 0; k < D; ++k) p[k] *= detail::sideOf(d[k]);
+    return p;
+  }
+  static constexpr bool strictlyConvex = false;
   std::string describe() const {
     std::ostringstream out;
     out << (D == 3 ? "box " : "rectangle ");
@@ -199,6 +214,15 @@ struct CapsuleSdf {
     h[D - 1] += halfLength;
     return Aabb<D>{Vec<D>(-h), h};
   }
+  /// The surface point farthest along d: the end of the core segment on d's side plus
+  /// r d/|d|.
+  Vec<D> support(const Vec<D>& d) const {
+    Vec<D> p = Vec<D>::Zero();
+    p[D - 1] = detail::sideOf(d[D - 1]) * halfLength;
+    const double n = d.norm();
+    return n > 0.0 ? Vec<D>(p + radius * d / n) : p;
+  }
+  static constexpr bool strictlyConvex = false;
   std::string describe() const {
     std::ostringstream out;
     out << "capsule half-length " << halfLength << " r = " << radius;
@@ -255,6 +279,17 @@ struct CylinderSdf {
     h[D - 1] = halfHeight;
     return Aabb<D>{Vec<D>(-h), h};
   }
+  /// The surface point farthest along d: the rim point r d_radial/|d_radial| on the cap of
+  /// d's side (the cap's centre when d is along the axis).
+  Vec<D> support(const Vec<D>& d) const {
+    Vec<D> p = Vec<D>::Zero();
+    const Vec<D - 1> radial = d.template head<D - 1>();
+    const double rho = radial.norm();
+    if (rho > 0.0) p.template head<D - 1>() = radius * radial / rho;
+    p[D - 1] = detail::sideOf(d[D - 1]) * halfHeight;
+    return p;
+  }
+  static constexpr bool strictlyConvex = false;
   std::string describe() const {
     std::ostringstream out;
     out << (D == 3 ? "cylinder" : "rectangle (cylinder section)") << " r = " << radius
@@ -297,6 +332,39 @@ class AnalyticShape final : public Shape<D> {
   }
   const Sdf& sdf() const { return sdf_; }
   const SurfaceMesh<D>& mesh() const { return mesh_; }
+
+  // [analytic_deepest_point]
+  /// The exact deepest-point query (chapter 11, Eq. (11.6)) of a convex primitive: the
+  /// point of this surface farthest along -N, N the other body's normal, found by the
+  /// fixed point p <- support(-M^T N_other(M p + t)) started at the centre. Against a flat
+  /// face one iteration is exact (a sphere's point is its centre minus r N); against a
+  /// curved body it converges to the point where both normals are opposite. A torus (not
+  /// convex) has no such query.
+  bool deepestPoint(const Shape<D>& other, const Mat<D>& M, const Vec<D>& t,
+                    Vec<D>& point) const override {
+    if constexpr (requires(const Sdf& f, const Vec<D>& d) { f.support(d); }) {
+      Vec<D> p = sdf_.support(-(M.transpose() * other.normal(t)));
+      for (int k = 0; k < 8; ++k) {
+        const Vec<D> next = sdf_.support(-(M.transpose() * other.normal(M * p + t)));
+        const bool settled = (next - p).norm() <= 1e-14 * sdf_.bounds().extent().norm();
+        p = next;
+        if (settled) break;
+      }
+      point = p;
+      return true;
+    } else {
+      (void)other, (void)M, (void)t, (void)point;
+      return false;
+    }
+  }
+  bool deepestPointIsWholeContact() const override {
+    if constexpr (requires { Sdf::strictlyConvex; }) {
+      return Sdf::strictlyConvex;
+    } else {
+      return false;
+    }
+  }
+  // [analytic_deepest_point]
 
  private:
   Sdf sdf_;

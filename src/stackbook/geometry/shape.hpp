@@ -35,6 +35,19 @@ class Shape {
 
   /// A short description for messages and summaries ("box 1 x 1 x 1", "mesh ring.obj").
   virtual std::string describe() const = 0;
+
+  /// The exact deepest-point query (chapter 11): the body-frame point of this surface
+  /// deepest inside `other`, whose body frame this one maps into by x -> M x + t. Only shapes
+  /// that know their surface exactly answer (the convex analytic primitives); the others
+  /// return false and leave `point` alone.
+  virtual bool deepestPoint(const Shape<D>& /*other*/, const Mat<D>& /*M*/, const Vec<D>& /*t*/,
+                            Vec<D>& /*point*/) const {
+    return false;
+  }
+
+  /// True when the deepest point is this shape's whole contact with a body (a strictly
+  /// convex shape: sphere, disk), so that it may replace the surface samples.
+  virtual bool deepestPointIsWholeContact() const { return false; }
 };
 // [shape_interface]
 

@@ -32,9 +32,31 @@ struct BodyVisual {
 };
 // [body_visual]
 
+// [frame_energy]
+/// The energy of the dynamic bodies of a world at one frame: kinetic (m v.v + omega.L)/2 and
+/// potential -m g.x (Eq. (10.4)); static bodies contribute nothing.
+struct FrameEnergy {
+  double kinetic = 0.0;
+  double potential = 0.0;
+  double total() const { return kinetic + potential; }
+};
+
+template <int D>
+FrameEnergy frameEnergy(const World<D>& world) {
+  FrameEnergy e;
+  for (const RigidBody<D>& b : world.bodies) {
+    if (b.isStatic()) continue;
+    e.kinetic += b.kineticEnergy();
+    e.potential -= b.mass() * world.gravity.dot(b.position);  // U = -m g.x, Eq. (10.4)
+  }
+  return e;
+}
+// [frame_energy]
+
 // [recording]
-/// Frames of a run: times[f] and poses[f][i] for body i. Static bodies are recorded
-/// like the others (they may be placed anywhere; they simply do not move).
+/// Frames of a run: times[f], poses[f][i] and the world-frame velocities v and omega of
+/// body i, and the world's energy at the frame. Static bodies are recorded like the others
+/// (they may be placed anywhere; they simply do not move).
 template <int D>
 class Recording {
  public:
@@ -49,9 +71,18 @@ class Recording {
                                   std::to_string(visuals_.size()) + " visuals");
     }
     std::vector<Pose<D>> frame;
+    std::vector<Vec<D>> v;
+    std::vector<AngVec<D>> omega;
     frame.reserve(world.bodies.size());
-    for (const RigidBody<D>& body : world.bodies) frame.push_back(poseOf<D>(body));
+    for (const RigidBody<D>& body : world.bodies) {
+      frame.push_back(poseOf<D>(body));
+      v.push_back(body.velocity);
+      omega.push_back(body.angularVelocity);
+    }
     recordPoses(t, std::move(frame));
+    velocities_.back() = std::move(v);
+    angularVelocities_.back() = std::move(omega);
+    energies_.back() = frameEnergy<D>(world);
   }
 
   /// Append a frame at time t from the poses themselves (one per visual, in order): for
@@ -67,12 +98,21 @@ class Recording {
     }
     times_.push_back(t);
     poses_.push_back(std::move(frame));
+    velocities_.emplace_back(visuals_.size(), Vec<D>::Zero());
+    angularVelocities_.emplace_back(visuals_.size(), AngVec<D>::Zero());
+    energies_.emplace_back();
   }
 
   const std::vector<BodyVisual<D>>& visuals() const { return visuals_; }
   const std::vector<double>& times() const { return times_; }
   /// poses()[f][i]: body i at frame f.
   const std::vector<std::vector<Pose<D>>>& poses() const { return poses_; }
+  /// velocities()[f][i], angularVelocities()[f][i]: v and omega of body i at frame f, world
+  /// frame (zero for frames recorded from poses alone).
+  const std::vector<std::vector<Vec<D>>>& velocities() const { return velocities_; }
+  const std::vector<std::vector<AngVec<D>>>& angularVelocities() const { return angularVelocities_; }
+  /// energies()[f]: the world's energy at frame f (zero for frames recorded from poses alone).
+  const std::vector<FrameEnergy>& energies() const { return energies_; }
   std::size_t frameCount() const { return times_.size(); }
   std::size_t bodyCount() const { return visuals_.size(); }
 
@@ -80,6 +120,9 @@ class Recording {
   std::vector<BodyVisual<D>> visuals_;
   std::vector<double> times_;
   std::vector<std::vector<Pose<D>>> poses_;
+  std::vector<std::vector<Vec<D>>> velocities_;
+  std::vector<std::vector<AngVec<D>>> angularVelocities_;
+  std::vector<FrameEnergy> energies_;
 };
 // [recording]
 

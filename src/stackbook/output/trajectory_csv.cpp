@@ -23,7 +23,8 @@ std::string csvField(const std::string& text) {
 template <int D>
 void writeTrajectoryCsv(const Recording<D>& recording, const std::string& path) {
   using output_detail::exactDecimal;
-  std::string csv = D == 2 ? "time,body,name,x,y,angle\n" : "time,body,name,x,y,z,qw,qx,qy,qz\n";
+  std::string csv = D == 2 ? "time,body,name,x,y,angle,vx,vy,omega\n"
+                           : "time,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz\n";
   const auto& visuals = recording.visuals();
   for (std::size_t f = 0; f < recording.frameCount(); ++f) {
     const std::string time = exactDecimal(recording.times()[f]);
@@ -48,6 +49,16 @@ void writeTrajectoryCsv(const Recording<D>& recording, const std::string& path) 
           csv += exactDecimal(c);
         }
       }
+      const Vec<D>& v = recording.velocities()[f][i];
+      for (int k = 0; k < D; ++k) {
+        csv += ',';
+        csv += exactDecimal(v[k]);
+      }
+      const AngVec<D>& omega = recording.angularVelocities()[f][i];
+      for (int k = 0; k < omega.size(); ++k) {
+        csv += ',';
+        csv += exactDecimal(omega[k]);
+      }
       csv += '\n';
     }
   }
@@ -56,5 +67,20 @@ void writeTrajectoryCsv(const Recording<D>& recording, const std::string& path) 
 
 template void writeTrajectoryCsv<2>(const Recording<2>&, const std::string&);
 template void writeTrajectoryCsv<3>(const Recording<3>&, const std::string&);
+
+template <int D>
+void writeEnergyCsv(const Recording<D>& recording, const std::string& path) {
+  using output_detail::exactDecimal;
+  std::string csv = "time,kinetic,potential,total\n";
+  for (std::size_t f = 0; f < recording.frameCount(); ++f) {
+    const FrameEnergy& e = recording.energies()[f];
+    csv += exactDecimal(recording.times()[f]) + ',' + exactDecimal(e.kinetic) + ',' +
+           exactDecimal(e.potential) + ',' + exactDecimal(e.total()) + '\n';
+  }
+  output_detail::writeFileOrThrow("writeEnergyCsv", path, csv);
+}
+
+template void writeEnergyCsv<2>(const Recording<2>&, const std::string&);
+template void writeEnergyCsv<3>(const Recording<3>&, const std::string&);
 
 }  // namespace stackbook

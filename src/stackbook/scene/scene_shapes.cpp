@@ -91,14 +91,14 @@ BuiltShape<D> buildShape(const Reader& r, const json& spec, const std::string& p
   }
   // The keys each type takes; any other is an unknown field.
   static const std::map<std::string, std::vector<std::string>> keys{
-      {"box", {"type", "size"}},
-      {"sphere", {"type", "radius"}},
-      {"disk", {"type", "radius"}},
-      {"torus", {"type", "majorRadius", "minorRadius"}},
-      {"annulus", {"type", "majorRadius", "minorRadius"}},
-      {"ring", {"type", "majorRadius", "minorRadius"}},
-      {"capsule", {"type", "radius", "length"}},
-      {"cylinder", {"type", "radius", "height"}},
+      {"box", {"type", "size", "samples"}},
+      {"sphere", {"type", "radius", "samples"}},
+      {"disk", {"type", "radius", "samples"}},
+      {"torus", {"type", "majorRadius", "minorRadius", "samples"}},
+      {"annulus", {"type", "majorRadius", "minorRadius", "samples"}},
+      {"ring", {"type", "majorRadius", "minorRadius", "samples"}},
+      {"capsule", {"type", "radius", "length", "samples"}},
+      {"cylinder", {"type", "radius", "height", "samples"}},
       {"L", {"type", "cellSize", "sdfResolution"}},
       {"U", {"type", "outerRadius", "height", "wallThickness", "bottomThickness", "sdfResolution"}},
       {"cup", {"type", "outerRadius", "height", "wallThickness", "bottomThickness", "sdfResolution"}},
@@ -122,22 +122,37 @@ BuiltShape<D> buildShape(const Reader& r, const json& spec, const std::string& p
     return v == nullptr ? 32 : r.integer(*v, ptr + "/sdfResolution", 4, D == 2 ? 1024 : 256);
   };
 
+  // The surface sample density of an analytic shape (chapter 11): "samples" is the
+  // icosphere level of a sphere (3D), the pieces per edge of a box (and of a 2D cylinder,
+  // a rectangle), and the vertices around each circle of the other round shapes.
+  SampleMeshSettings sampling;
+  if (const json* v = member(spec, "samples")) {
+    const std::string at = ptr + "/samples";
+    if (type == "box" || (type == "cylinder" && D == 2)) {
+      sampling.boxSubdivisions = r.integer(*v, at, 1, 64);
+    } else if (type == "sphere" && D == 3) {
+      sampling.sphereLevel = r.integer(*v, at, 0, 6);
+    } else {
+      sampling.circleSegments = r.integer(*v, at, 8, 4096);
+    }
+  }
+
   if (type == "box") {
     const Vec<D> size = r.positiveVector<D>(need("size"), ptr + "/size");
     double measure = 0.0;
     AngVec<D> moments;
     boxMassProperties<D>(size, measure, moments);
-    return analytic<D>(makeBoxShape<D>(size), measure, moments);
+    return analytic<D>(makeBoxShape<D>(size, sampling), measure, moments);
   }
   if (type == "sphere" || type == "disk") {
     const double radius = r.positive(need("radius"), ptr + "/radius");
     const double r2 = radius * radius;
     if constexpr (D == 2) {
       const double area = M_PI * r2;
-      return analytic<2>(makeSphereShape<2>(radius), area, AngVec<2>::Constant(area * r2 / 2.0));
+      return analytic<2>(makeSphereShape<2>(radius, sampling), area, AngVec<2>::Constant(area * r2 / 2.0));
     } else {
       const double volume = 4.0 / 3.0 * M_PI * r2 * radius;
-      return analytic<3>(makeSphereShape<3>(radius), volume, AngVec<3>::Constant(0.4 * volume * r2));
+      return analytic<3>(makeSphereShape<3>(radius, sampling), volume, AngVec<3>::Constant(0.4 * volume * r2));
     }
   }
   if (type == "torus" || type == "annulus" || type == "ring") {
@@ -146,12 +161,12 @@ BuiltShape<D> buildShape(const Reader& r, const json& spec, const std::string& p
     if (!(a < R)) r.fail(ptr + "/minorRadius", "must be smaller than majorRadius = " + formatNumber(R));
     if constexpr (D == 2) {
       const double area = 4.0 * M_PI * R * a;  // pi (R+a)^2 - pi (R-a)^2
-      return analytic<2>(makeTorusShape<2>(R, a), area, AngVec<2>::Constant(area * (R * R + a * a)));
+      return analytic<2>(makeTorusShape<2>(R, a, sampling), area, AngVec<2>::Constant(area * (R * R + a * a)));
     } else {
       const double volume = 2.0 * M_PI * M_PI * R * a * a;
       const double side = volume * (R * R / 2.0 + 5.0 * a * a / 8.0);
       const double axial = volume * (R * R + 3.0 * a * a / 4.0);
-      return analytic<3>(makeTorusShape<3>(R, a), volume, Vec3(side, side, axial));
+      return analytic<3>(makeTorusShape<3>(R, a, sampling), volume, Vec3(side, side, axial));
     }
   }
   if (type == "capsule") {
@@ -165,7 +180,7 @@ BuiltShape<D> buildShape(const Reader& r, const json& spec, const std::string& p
       const double d0 = 4.0 * radius / (3.0 * M_PI);
       const double moment = rect * (4.0 * r2 + 4.0 * h * h) / 12.0 +
                             2.0 * half * (r2 / 2.0 - d0 * d0 + (h + d0) * (h + d0));
-      return analytic<2>(makeCapsuleShape<2>(h, radius), rect + 2.0 * half, AngVec<2>::Constant(moment));
+      return analytic<2>(makeCapsuleShape<2>(h, radius, sampling), rect + 2.0 * half, AngVec<2>::Constant(moment));
     } else {
       // A cylinder of length 2h and two hemispheres whose centroids are 3r/8 beyond its ends.
       const double cyl = M_PI * r2 * length;
@@ -174,7 +189,7 @@ BuiltShape<D> buildShape(const Reader& r, const json& spec, const std::string& p
       const double d0 = 3.0 * radius / 8.0;
       const double side = cyl * (3.0 * r2 + length * length) / 12.0 +
                           2.0 * hemi * (83.0 / 320.0 * r2 + (h + d0) * (h + d0));
-      return analytic<3>(makeCapsuleShape<3>(h, radius), cyl + 2.0 * hemi, Vec3(side, side, axial));
+      return analytic<3>(makeCapsuleShape<3>(h, radius, sampling), cyl + 2.0 * hemi, Vec3(side, side, axial));
     }
   }
   if (type == "cylinder") {
@@ -184,11 +199,11 @@ BuiltShape<D> buildShape(const Reader& r, const json& spec, const std::string& p
       double measure = 0.0;
       AngVec<2> moments;
       boxMassProperties<2>(Vec2(2.0 * radius, height), measure, moments);
-      return analytic<2>(makeCylinderShape<2>(radius, 0.5 * height), measure, moments);
+      return analytic<2>(makeCylinderShape<2>(radius, 0.5 * height, sampling), measure, moments);
     } else {
       const double volume = M_PI * radius * radius * height;
       const double side = volume * (3.0 * radius * radius + height * height) / 12.0;
-      return analytic<3>(makeCylinderShape<3>(radius, 0.5 * height), volume,
+      return analytic<3>(makeCylinderShape<3>(radius, 0.5 * height, sampling), volume,
                          Vec3(side, side, volume * radius * radius / 2.0));
     }
   }

@@ -119,7 +119,7 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
   r.requireObject(solver, p,
                   {"collisionIterations", "collisionPairIterations", "contactIterations",
                    "contactPairIterations", "contactRestitution", "shock", "order", "impulsePoint",
-                   "impulsePointNormalCosine", "frictionCone"},
+                   "impulsePointNormalCosine", "frictionCone", "rotation", "surfaceQuery"},
                   "the solver settings");
   if (const json* v = member(solver, "collisionIterations")) s.collisionIterations = r.integer(*v, p + "/collisionIterations", 0, 1000);
   if (const json* v = member(solver, "collisionPairIterations")) s.collisionPairIterations = r.integer(*v, p + "/collisionPairIterations", 1, 1000);
@@ -141,6 +141,14 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
   if (member(solver, "impulsePoint")) {
     s.impulsePoint.rule = choose("impulsePoint", "deepest", ImpulsePointRule::Deepest, "centre",
                                  ImpulsePointRule::DepthWeightedCentre);
+  }
+  if (member(solver, "rotation")) {
+    s.rotation = choose("rotation", "exponentialMap", RotationUpdate::ExponentialMap, "implicitMidpoint",
+                        RotationUpdate::ImplicitMidpoint);
+  }
+  if (member(solver, "surfaceQuery")) {
+    s.detection.narrow.surfaceQuery =
+        choose("surfaceQuery", "samples", SurfaceQuery::Samples, "deepestPoint", SurfaceQuery::DeepestPoint);
   }
   if (member(solver, "frictionCone")) {
     s.frictionCone = choose("frictionCone", "impulse", FrictionConeRule::EachImpulse, "step",

@@ -1,6 +1,7 @@
 // Running a scene (chapter 10). See simulation.hpp.
 #include "stackbook/scene/simulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -16,13 +17,8 @@ using nlohmann::json;
 
 template <int D>
 EnergyReport worldEnergy(const World<D>& world) {
-  EnergyReport e;
-  for (const RigidBody<D>& b : world.bodies) {
-    if (b.isStatic()) continue;
-    e.kinetic += b.kineticEnergy();
-    e.potential -= b.mass() * world.gravity.dot(b.position);  // U = -m g.x, Eq. (10.4)
-  }
-  return e;
+  const FrameEnergy f = frameEnergy<D>(world);
+  return EnergyReport{f.kinetic, f.potential};
 }
 
 template <int D>
@@ -37,6 +33,14 @@ double maxPenetration(const World<D>& world) {
     for (const InterferenceSample<D>& s : pair.samples) deepest = std::max(deepest, -s.depth);
   }
   return deepest;
+}
+
+std::int64_t frameStep(std::int64_t frame, double frameRate, double dt) {
+  // Steps per frame r = 1/(frameRate dt); the product f r is rounded up, less a relative
+  // 1e-9 so that a rounding error in r (1000 * 0.001 is not always exactly 1) never pushes a
+  // frame to the next step.
+  const double at = static_cast<double>(frame) / (frameRate * dt);
+  return std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(at - 1e-9 * std::max(1.0, at))));
 }
 
 template EnergyReport worldEnergy<2>(const World<2>&);
@@ -67,7 +71,6 @@ RunResult<D> runBodies(const Scene& scene, const SceneBodies<D>& bodies, const R
   const double duration = options.duration > 0.0 ? options.duration : scene.duration;
   // The number of steps that covers the duration (a last partial step is taken whole).
   const auto steps = static_cast<std::int64_t>(std::ceil(duration / settings.dt - 1e-9));
-  const double frameInterval = 1.0 / scene.output.frameRate;
 
   RunResult<D> result{Recording<D>(bodies.visuals), {}, 0.0, 0.0, 0.0, 0.0, {}, {}, true};
   result.energyStart = worldEnergy<D>(world);
@@ -82,15 +85,15 @@ RunResult<D> runBodies(const Scene& scene, const SceneBodies<D>& bodies, const R
   measure(0.0);
   // [run_loop]
   const PostContactHook<D> hook = shockPropagationHook<D>();
-  double nextFrame = frameInterval;
+  std::int64_t frame = 1;
   for (std::int64_t n = 1; n <= steps; ++n) {
     result.counters += step<D>(world, settings, hook);
     const double t = static_cast<double>(n) * settings.dt;
-    // Frames at multiples of 1/frameRate (the step that reaches each one), and the end:
-    // Eq. (10.3).
-    if (t + 1e-9 * settings.dt >= nextFrame || n == steps) {
+    // Frames at multiples of 1/frameRate (the step that reaches each one, counted in whole
+    // steps), and the end: Eq. (10.3).
+    if (n >= frameStep(frame, scene.output.frameRate, settings.dt) || n == steps) {
       measure(t);
-      while (nextFrame <= t + 1e-9 * settings.dt) nextFrame += frameInterval;
+      while (frameStep(frame, scene.output.frameRate, settings.dt) <= n) ++frame;
     }
     if (options.progress) options.progress(static_cast<double>(n) / static_cast<double>(steps), t);
   }

@@ -4,6 +4,7 @@
 /// chapter 9's shock propagation for the scene's duration, records frames at the scene's
 /// frame rate, sums the step counters, and measures the deepest interpenetration and the
 /// energy at the start and the end.
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <variant>
@@ -31,6 +32,11 @@ EnergyReport worldEnergy(const World<D>& world);
 /// inside another body of -phi (0 if none). Static-static pairs are not examined.
 template <int D>
 double maxPenetration(const World<D>& world);
+
+/// The step n after which frame f >= 1 of a run at `frameRate` frames per second and step dt
+/// is recorded: the first with n dt >= f / frameRate (Eq. (10.3)), found as a whole number of
+/// steps, so that frameRate = 1/dt records after every step and no frame is ever dropped.
+std::int64_t frameStep(std::int64_t frame, double frameRate, double dt);
 
 // [run_options]
 /// How runScene() runs a scene.

@@ -29,6 +29,8 @@ struct ContactGraphSettings {
   NarrowPhaseSettings narrow;
   /// Broad-phase settings; the margin is raised to cover the extra displacement dt^2 |a|.
   BroadPhaseSettings broad;
+  /// How predicted poses turn (the step's rotation rule, chapter 5).
+  RotationUpdate rotation = RotationUpdate::ExponentialMap;
 };
 // [graph_settings]
 
@@ -45,7 +47,7 @@ template <int D>
 ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings& settings,
                                DetectionCounters* counters = nullptr) {
   const int n = world.size();
-  std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, settings.dt);
+  std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, settings.dt, settings.rotation);
   // The advanced bodies: a copy of p with v_p + dt a_p and L_p + dt tau_p.
   std::vector<RigidBody<D>> advanced(world.bodies.begin(), world.bodies.end());
   double reach = 0.0;
@@ -70,7 +72,7 @@ ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings
       if (world.bodies[k].isStatic()) continue;
       const CollisionBody<D> old = views[k];
       views[k] = collisionBodyAt<D>(advanced[k], *world.shapes[k],
-                                    predictPose<D>(advanced[k], settings.dt));  // x_p + dt (v_p + dt a_p)
+                                    predictPose<D>(advanced[k], settings.dt, settings.rotation));  // x_p + dt (v_p + dt a_p)
       // Whether any sample approaches: the lazy search of chapter 7 answers it with the
       // normals of the samples it tests only.
       if (deepestApproachingInPair<D>(views, pair, settings.narrow, counters, scratch)) {
@@ -99,7 +101,7 @@ ContactGraph withUnpressedContacts(const World<D>& world, const ContactGraph& gr
   pressed.reserve(graph.edgeCount());
   for (const ContactPair& c : graph.edges()) pressed.push_back(ordered(c.below, c.above));
   std::sort(pressed.begin(), pressed.end());
-  const std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, settings.dt);
+  const std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, settings.dt, settings.rotation);
   std::vector<ContactPair> edges = graph.edges();
   for (const BodyPair& p : sweepAndPrune<D>(views, settings.broad, counters)) {  // sorted by (i, j)
     if (std::binary_search(pressed.begin(), pressed.end(), ordered(p.first, p.second))) continue;
@@ -219,7 +221,7 @@ void shockPropagationPass(World<D>& world, const ContactGraph& graph, const Cont
   spec.ledger = ledger;  // the step's ledger under FrictionConeRule::StepTotal (Eq. (8.13))
   spec.recorder = settings.contactRecorder;  // chapter 10's contacts output; nullptr: off
   spec.stage = ContactStage::Shock;
-  std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, settings.dt);
+  std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, settings.dt, settings.rotation);
   // Isolated levels are skipped only when the contact stage swept them (Eq. (9.9)).
   const bool skipIsolated = contactStageRuns(settings, effects);
   std::vector<char> isolated(levels.levelCount(), 0);  // decided before anything is frozen
@@ -259,6 +261,7 @@ inline ContactGraphSettings stepGraphSettings(const StepSettings& settings, cons
   g.loads = effects.gravity;
   g.narrow = settings.detection.narrow;
   g.broad = settings.detection.broad;
+  g.rotation = settings.rotation;
   return g;
 }
 

@@ -187,7 +187,7 @@ StepCounters gbfStep(World<D>& world, const StepSettings& settings,
 
   // (5) Position update with the velocities contact left.
   t = std::chrono::steady_clock::now();
-  for (RigidBody<D>& body : world.bodies) advancePosition<D>(body, dt);  // Eqs. (5.8)-(5.12)
+  for (RigidBody<D>& body : world.bodies) advancePosition<D>(body, dt, settings.rotation);  // Eqs. (5.8)-(5.12)
   counters.positionUpdateSeconds += detail::secondsSince(t);
   detail::quarantine<D>(world, stepStart, counters);  // B21: isolate a body gone non-finite
   counters.totalSeconds = detail::secondsSince(start);

@@ -39,14 +39,15 @@ enum class Lookahead {
 };
 // [lookahead]
 
-/// The pose body i is tested at under the given lookahead.
+/// The pose body i is tested at under the given lookahead, turned by the step's rotation rule.
 template <int D>
-Pose<D> testedPose(const World<D>& world, int i, Lookahead lookahead, double dt) {
+Pose<D> testedPose(const World<D>& world, int i, Lookahead lookahead, double dt,
+                   RotationUpdate rotation = RotationUpdate::ExponentialMap) {
   const RigidBody<D>& body = world.bodies[static_cast<std::size_t>(i)];
   switch (lookahead) {
     case Lookahead::Current: return poseOf<D>(body);
-    case Lookahead::Velocity: return predictPose<D>(body, dt);                         // Eq. (8.2)
-    case Lookahead::VelocityAndLoads: return predictPose<D>(body, dt, world.loads(i));  // Eq. (8.1)
+    case Lookahead::Velocity: return predictPose<D>(body, dt, rotation);                         // Eq. (8.2)
+    case Lookahead::VelocityAndLoads: return predictPose<D>(body, dt, world.loads(i), rotation);  // Eq. (8.1)
   }
   return poseOf<D>(body);
 }
@@ -169,8 +170,10 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
     }
     // [pair_rolling]
     ++applied;
-    views[static_cast<std::size_t>(s.owner)].pose = testedPose<D>(world, s.owner, spec.lookahead, dt);
-    views[static_cast<std::size_t>(s.other)].pose = testedPose<D>(world, s.other, spec.lookahead, dt);
+    views[static_cast<std::size_t>(s.owner)].pose =
+        testedPose<D>(world, s.owner, spec.lookahead, dt, settings.rotation);
+    views[static_cast<std::size_t>(s.other)].pose =
+        testedPose<D>(world, s.other, spec.lookahead, dt, settings.rotation);
   }
   ++counters.pairIterationCapHits;
   return applied;
@@ -180,13 +183,14 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
 // [stage_views]
 /// The collision view of every body at its tested pose under `lookahead`.
 template <int D>
-std::vector<CollisionBody<D>> stageViews(const World<D>& world, Lookahead lookahead, double dt) {
+std::vector<CollisionBody<D>> stageViews(const World<D>& world, Lookahead lookahead, double dt,
+                                         RotationUpdate rotation = RotationUpdate::ExponentialMap) {
   std::vector<CollisionBody<D>> views;
   views.reserve(world.bodies.size());
   for (int i = 0; i < world.size(); ++i) {
     const std::size_t k = static_cast<std::size_t>(i);
     views.push_back(collisionBodyAt<D>(world.bodies[k], *world.shapes[k],
-                                       testedPose<D>(world, i, lookahead, dt)));
+                                       testedPose<D>(world, i, lookahead, dt, rotation)));
   }
   return views;
 }
@@ -219,7 +223,7 @@ template <int D>
 void runImpulseStage(World<D>& world, const StageSpec& spec, double dt,
                      const StepSettings& settings, StageCounters& counters) {
   const auto start = std::chrono::steady_clock::now();
-  std::vector<CollisionBody<D>> views = stageViews<D>(world, spec.lookahead, dt);
+  std::vector<CollisionBody<D>> views = stageViews<D>(world, spec.lookahead, dt, settings.rotation);
   for (int sweep = 1; sweep <= spec.sweeps; ++sweep) {
     const std::vector<BodyPair> pairs =
         sweepAndPrune<D>(views, settings.detection.broad, &counters.detection);
@@ -236,7 +240,8 @@ void runImpulseStage(World<D>& world, const StageSpec& spec, double dt,
   extern template int resolvePair<D>(World<D>&, std::vector<CollisionBody<D>>&, const BodyPair&, \
                                      const StageSpec&, int, double, const StepSettings&,        \
                                      StageCounters&);                                            \
-  extern template std::vector<CollisionBody<D>> stageViews<D>(const World<D>&, Lookahead, double); \
+  extern template std::vector<CollisionBody<D>> stageViews<D>(const World<D>&, Lookahead, double, \
+                                                              RotationUpdate);                   \
   extern template int sweepPairs<D>(World<D>&, std::vector<CollisionBody<D>>&,                  \
                                     const std::vector<BodyPair>&, const StageSpec&, int, double, \
                                     const StepSettings&, StageCounters&);                       \

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "stackbook/body/rotation_update.hpp"
 #include "stackbook/collision/impulse_point.hpp"
 #include "stackbook/collision/narrow_phase.hpp"
 #include "stackbook/impulse/friction_settings.hpp"
@@ -107,6 +108,9 @@ struct StepSettings {
   FrictionConeRule frictionCone = FrictionConeRule::EachImpulse;
   /// GBF's order or the traditional one.
   StepOrder order = StepOrder::Gbf;
+  /// How the position update (and every predicted pose) turns a body: GBF's exponential map
+  /// (the default) or the energy-conserving implicit midpoint rule (chapter 5, Eq. (5.27)).
+  RotationUpdate rotation = RotationUpdate::ExponentialMap;
   /// Overrides of the effects inferred from the scene (effects.hpp); empty: infer all.
   EffectOverrides effects;
   /// Shock propagation (chapter 9); used only when that effect runs.

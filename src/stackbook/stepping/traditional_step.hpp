@@ -42,7 +42,7 @@ StepCounters traditionalStep(World<D>& world, const StepSettings& settings,
   }
   counters.velocityUpdateSeconds += detail::secondsSince(t);
   t = std::chrono::steady_clock::now();
-  for (RigidBody<D>& body : world.bodies) advancePosition<D>(body, dt);  // Eqs. (5.8)-(5.12)
+  for (RigidBody<D>& body : world.bodies) advancePosition<D>(body, dt, settings.rotation);  // Eqs. (5.8)-(5.12)
   counters.positionUpdateSeconds += detail::secondsSince(t);
 
   if (effects.collision) {

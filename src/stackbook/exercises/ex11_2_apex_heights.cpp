@@ -1,0 +1,21 @@
+// Exercise 11.2 (your answer goes here): see ex11_2_apex_heights.hpp and chapter 11.
+#include "stackbook/exercises/ex11_2_apex_heights.hpp"
+
+namespace stackbook {
+
+std::vector<double> apexHeights(const std::vector<double>& heights) {
+  // TODO(reader): the local maxima of the recorded heights.
+  (void)heights;
+  return {};
+}
+
+double apexError(const std::vector<double>& heights, double h0, double e, int count) {
+  // TODO(reader): compare the first `count` apexes with e^{2k} h0.
+  (void)heights;
+  (void)h0;
+  (void)e;
+  (void)count;
+  return -1.0;
+}
+
+}  // namespace stackbook

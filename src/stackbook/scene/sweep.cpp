@@ -1,0 +1,593 @@
+// Parameter sweeps (chapter 11). See sweep.hpp.
+#include "stackbook/scene/sweep.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "stackbook/output/output_files.hpp"
+
+namespace stackbook {
+
+using nlohmann::json;
+
+namespace {
+
+const std::vector<std::string> kQuantities = {"position",       "velocity",    "angularVelocity",
+                                              "energyDrift",    "maxPenetration", "rollingStart",
+                                              "flipPeriod"};
+
+std::string joinPointer(const std::string& base, const std::string& key) { return base + "/" + key; }
+
+const json& require(const json& object, const std::string& key, const std::string& pointer,
+                    const std::string& file) {
+  if (!object.contains(key)) throw SceneError(file, pointer, "missing field \"" + key + "\"");
+  return object.at(key);
+}
+
+std::string requireString(const json& v, const std::string& pointer, const std::string& file) {
+  if (!v.is_string() || v.get<std::string>().empty()) {
+    throw SceneError(file, pointer, "must be a non-empty string, got " + v.dump());
+  }
+  return v.get<std::string>();
+}
+
+double requireNumber(const json& v, const std::string& pointer, const std::string& file) {
+  if (!v.is_number() || !std::isfinite(v.get<double>())) {
+    throw SceneError(file, pointer, "must be a finite number, got " + v.dump());
+  }
+  return v.get<double>();
+}
+
+int requireIndex(const json& v, const std::string& pointer, const std::string& file) {
+  if (!v.is_number_integer() || v.get<long long>() < 0) {
+    throw SceneError(file, pointer, "must be an integer >= 0, got " + v.dump());
+  }
+  return static_cast<int>(v.get<long long>());
+}
+
+void rejectUnknown(const json& object, const std::vector<std::string>& known, const std::string& pointer,
+                   const std::string& file) {
+  for (auto it = object.begin(); it != object.end(); ++it) {
+    if (std::find(known.begin(), known.end(), it.key()) != known.end()) continue;
+    const std::string close = closestName(it.key(), known);
+    throw SceneError(file, joinPointer(pointer, it.key()),
+                     "unknown field" + (close.empty() ? std::string() : " (did you mean \"" + close + "\"?)"));
+  }
+}
+
+/// A CSV field, quoted when it holds a separator, a quote or a line end (RFC 4180).
+std::string csvField(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + '"';
+}
+
+std::string number(double x) { return output_detail::exactDecimal(x); }
+
+std::string fileStem(const std::string& name) {
+  std::string out;
+  for (char c : name) out += (std::isalnum(static_cast<unsigned char>(c)) != 0 ? c : '_');
+  return out;
+}
+
+}  // namespace
+
+SweepSpec parseSweepSpec(const json& doc, const std::string& file) {
+  SweepSpec spec;
+  spec.file = file;
+  if (!doc.is_object()) throw SceneError(file, "", "a sweep spec must be a JSON object");
+  rejectUnknown(doc, {"name", "description", "scene", "engine", "set", "knobs", "errors"}, "", file);
+  spec.name = doc.contains("name") ? requireString(doc.at("name"), "/name", file)
+                                   : std::filesystem::path(file).stem().string();
+  const std::string scene = requireString(require(doc, "scene", "", file), "/scene", file);
+  const std::filesystem::path base = std::filesystem::path(file).parent_path();
+  // A path is taken relative to the spec's folder; a bare name is a bundled scene.
+  const bool bare = scene.find('/') == std::string::npos && scene.find(".json") == std::string::npos;
+  spec.scene = bare || std::filesystem::path(scene).is_absolute() ? scene
+                                                                  : (base / scene).lexically_normal().string();
+  if (doc.contains("engine")) {
+    spec.engine = requireString(doc.at("engine"), "/engine", file);
+    if (spec.engine != "stackbook") {
+      throw SceneError(file, "/engine", "only \"stackbook\" runs here, got \"" + spec.engine + "\"");
+    }
+  }
+  if (doc.contains("set")) {
+    const json& sets = doc.at("set");
+    if (!sets.is_array()) throw SceneError(file, "/set", "must be an array of \"key=value\" strings");
+    for (std::size_t k = 0; k < sets.size(); ++k) {
+      const std::string p = "/set/" + std::to_string(k);
+      const std::string s = requireString(sets[k], p, file);
+      if (s.find('=') == std::string::npos || s.front() == '=') {
+        throw SceneError(file, p, "must be \"key=value\", got \"" + s + "\"");
+      }
+      spec.sets.push_back(s);
+    }
+  }
+  const json& knobs = require(doc, "knobs", "", file);
+  if (!knobs.is_array() || knobs.empty()) throw SceneError(file, "/knobs", "must be a non-empty array of knobs");
+  for (std::size_t k = 0; k < knobs.size(); ++k) {
+    const std::string p = "/knobs/" + std::to_string(k);
+    const json& knob = knobs[k];
+    if (!knob.is_object()) throw SceneError(file, p, "must be an object {\"key\": ..., \"values\": [...]}");
+    rejectUnknown(knob, {"key", "values"}, p, file);
+    SweepKnob out;
+    out.key = requireString(require(knob, "key", p, file), p + "/key", file);
+    const json& values = require(knob, "values", p, file);
+    if (!values.is_array() || values.empty()) throw SceneError(file, p + "/values", "must be a non-empty array");
+    for (const json& v : values) out.values.push_back(v);
+    for (const SweepKnob& earlier : spec.knobs) {
+      if (earlier.key == out.key) throw SceneError(file, p + "/key", "\"" + out.key + "\" is already a knob");
+    }
+    spec.knobs.push_back(std::move(out));
+  }
+  const json& errors = require(doc, "errors", "", file);
+  if (!errors.is_array() || errors.empty()) throw SceneError(file, "/errors", "must be a non-empty array of error measures");
+  for (std::size_t k = 0; k < errors.size(); ++k) {
+    const std::string p = "/errors/" + std::to_string(k);
+    const json& e = errors[k];
+    if (!e.is_object()) throw SceneError(file, p, "must be an object {\"name\": ..., \"quantity\": ...}");
+    rejectUnknown(e, {"name", "quantity", "body", "axis", "radius", "tolerance", "expected", "relative"}, p, file);
+    SweepError out;
+    out.quantity = requireString(require(e, "quantity", p, file), p + "/quantity", file);
+    if (std::find(kQuantities.begin(), kQuantities.end(), out.quantity) == kQuantities.end()) {
+      const std::string close = closestName(out.quantity, kQuantities);
+      throw SceneError(file, p + "/quantity",
+                       "unknown quantity \"" + out.quantity + "\"" +
+                           (close.empty() ? std::string(" (position, velocity, angularVelocity, energyDrift, "
+                                                        "maxPenetration, rollingStart, flipPeriod)")
+                                          : " (did you mean \"" + close + "\"?)"));
+    }
+    out.name = e.contains("name") ? requireString(e.at("name"), p + "/name", file) : out.quantity;
+    if (e.contains("body")) out.body = requireIndex(e.at("body"), p + "/body", file);
+    if (e.contains("axis")) {
+      out.axis = requireIndex(e.at("axis"), p + "/axis", file);
+      if (out.axis > 2) throw SceneError(file, p + "/axis", "must be 0, 1 or 2, got " + std::to_string(out.axis));
+    }
+    if (e.contains("radius")) {
+      out.radius = requireNumber(e.at("radius"), p + "/radius", file);
+      if (!(out.radius > 0.0)) throw SceneError(file, p + "/radius", "must be > 0");
+    } else if (out.quantity == "rollingStart") {
+      throw SceneError(file, p, "missing field \"radius\" (rollingStart needs the ball's radius)");
+    }
+    if (e.contains("tolerance")) {
+      out.tolerance = requireNumber(e.at("tolerance"), p + "/tolerance", file);
+      if (!(out.tolerance > 0.0)) throw SceneError(file, p + "/tolerance", "must be > 0");
+    }
+    if (e.contains("expected")) {
+      out.hasExpected = true;
+      out.expected = requireNumber(e.at("expected"), p + "/expected", file);
+    }
+    if (e.contains("relative")) {
+      if (!e.at("relative").is_boolean()) throw SceneError(file, p + "/relative", "must be true or false");
+      out.relative = e.at("relative").get<bool>();
+    }
+    if (out.relative && out.hasExpected && out.expected == 0.0) {
+      throw SceneError(file, p + "/relative", "a relative error needs an expected value other than 0");
+    }
+    for (const SweepError& earlier : spec.errors) {
+      if (earlier.name == out.name) throw SceneError(file, p + "/name", "\"" + out.name + "\" is already an error's name");
+    }
+    spec.errors.push_back(out);
+  }
+  return spec;
+}
+
+SweepSpec loadSweepSpec(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw SceneError(path, "", "no such sweep spec file");
+  return parseSweepSpec(readSceneJson(path), path);
+}
+
+std::vector<SweepRun> sweepRuns(const SweepSpec& spec) {
+  std::size_t total = 1;
+  for (const SweepKnob& k : spec.knobs) total *= k.values.size();
+  std::vector<SweepRun> runs;
+  runs.reserve(total);
+  for (std::size_t index = 0; index < total; ++index) {
+    SweepRun run;
+    run.index = index;
+    run.overrides = spec.sets;
+    std::size_t rest = index;
+    std::string config;
+    for (std::size_t k = 0; k < spec.knobs.size(); ++k) {
+      const SweepKnob& knob = spec.knobs[k];
+      const json& value = knob.values[rest % knob.values.size()];
+      rest /= knob.values.size();
+      const std::string text = value.is_string() ? value.get<std::string>() : value.dump();
+      run.overrides.push_back(knob.key + "=" + value.dump());
+      if (k == 0) {
+        run.knob = knob.key;
+        run.value = text;
+      } else {
+        config += (config.empty() ? "" : ";") + knob.key + "=" + text;
+      }
+    }
+    run.config = config.empty() ? "-" : config;
+    runs.push_back(std::move(run));
+  }
+  return runs;
+}
+
+namespace {
+
+template <int D>
+double measureError(const SweepError& e, const RunResult<D>& r, const Scene& scene, const std::string& file) {
+  const Recording<D>& rec = r.recording;
+  const std::size_t last = rec.frameCount() - 1;
+  const auto bodyCheck = [&] {
+    if (e.body >= static_cast<int>(rec.bodyCount())) {
+      throw SceneError(file, "", "error \"" + e.name + "\": body " + std::to_string(e.body) + " is not in the scene (" +
+                                     std::to_string(rec.bodyCount()) + " bodies)");
+    }
+  };
+  const auto axisCheck = [&](int size) {
+    if (e.axis >= size) {
+      throw SceneError(file, "", "error \"" + e.name + "\": axis " + std::to_string(e.axis) + " does not exist in " +
+                                     std::to_string(D) + "D");
+    }
+  };
+  const std::size_t b = static_cast<std::size_t>(e.body);
+  double value = 0.0;
+  if (e.quantity == "position") {
+    bodyCheck();
+    axisCheck(D);
+    value = rec.poses()[last][b].position[e.axis];
+  } else if (e.quantity == "velocity") {
+    bodyCheck();
+    axisCheck(D);
+    value = rec.velocities()[last][b][e.axis];
+  } else if (e.quantity == "angularVelocity") {
+    bodyCheck();
+    axisCheck(D == 2 ? 1 : 3);
+    value = rec.angularVelocities()[last][b][e.axis];
+  } else if (e.quantity == "energyDrift") {
+    const double e0 = rec.energies().front().total();
+    double worst = 0.0;
+    for (const FrameEnergy& f : rec.energies()) worst = std::max(worst, std::abs(f.total() - e0));
+    value = e0 != 0.0 ? worst / std::abs(e0) : worst;
+  } else if (e.quantity == "maxPenetration") {
+    value = r.maxPenetration;
+  } else if (e.quantity == "rollingStart") {
+    bodyCheck();
+    Vec<D> down = Vec<D>::Zero();
+    const Vec<D> g = std::get<SceneBodies<D>>(scene.bodies).world.gravity;
+    if (g.norm() > 0.0) down = e.radius * g.normalized();
+    value = std::numeric_limits<double>::infinity();
+    for (std::size_t f = 0; f < rec.frameCount(); ++f) {
+      const Vec<D> u = rec.velocities()[f][b] + crossAngular<D>(rec.angularVelocities()[f][b], down);
+      if (u.norm() < e.tolerance) {
+        value = rec.times()[f];
+        break;
+      }
+    }
+  } else if (e.quantity == "flipPeriod") {
+    bodyCheck();
+    if constexpr (D == 2) {
+      throw SceneError(file, "", "error \"" + e.name + "\": flipPeriod needs a 3D scene");
+    } else {
+      std::vector<double> flips;
+      double previous = 0.0;
+      for (std::size_t f = 0; f < rec.frameCount(); ++f) {
+        const double w = (rec.poses()[f][b].orientation.conjugate() * rec.angularVelocities()[f][b])[e.axis];
+        if (f > 0 && (previous > 0.0) != (w > 0.0)) {
+          const double t0 = rec.times()[f - 1], t1 = rec.times()[f];
+          flips.push_back(t0 + (t1 - t0) * previous / (previous - w));
+        }
+        previous = w;
+      }
+      value = flips.size() >= 2 ? 2.0 * (flips.back() - flips.front()) / static_cast<double>(flips.size() - 1)
+                                : std::numeric_limits<double>::infinity();
+    }
+  }
+  if (!e.hasExpected) return value;
+  const double diff = std::abs(value - e.expected);
+  return e.relative ? diff / std::abs(e.expected) : diff;
+}
+
+bool needsEveryStep(const SweepSpec& spec) {
+  for (const SweepError& e : spec.errors) {
+    if (e.quantity == "energyDrift" || e.quantity == "rollingStart" || e.quantity == "flipPeriod" ||
+        e.quantity == "maxPenetration") {
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+SweepRow runSweepRun(const SweepSpec& spec, const SweepRun& run) {
+  std::vector<std::string> overrides = run.overrides;
+  Scene scene = loadScene(spec.scene, overrides);
+  if (needsEveryStep(spec)) scene.output.frameRate = 1.0 / scene.settings.dt;
+  const SceneRun result = runScene(scene);
+  SweepRow row;
+  row.run = run;
+  std::visit(
+      [&](const auto& r) {
+        row.steps = r.counters.steps;
+        const double seconds = r.counters.totalSeconds;
+        row.msPerStep = r.counters.steps > 0 ? 1e3 * seconds / static_cast<double>(r.counters.steps) : 0.0;
+        row.msPerSimulatedSecond = r.simulatedSeconds > 0.0 ? 1e3 * seconds / r.simulatedSeconds : 0.0;
+        for (const SweepError& e : spec.errors) row.errors.push_back(measureError(e, r, scene, spec.file));
+      },
+      result);
+  return row;
+}
+
+std::string sweepCsvHeader(const SweepSpec& spec) {
+  std::string h = "run,scene,engine,config,knob,value,steps,ms_per_step,ms_per_simulated_second";
+  for (const SweepError& e : spec.errors) h += "," + csvField(e.name);
+  return h + "\n";
+}
+
+std::string sweepCsvLine(const SweepSpec& spec, const SweepRow& row) {
+  std::string line = std::to_string(row.run.index) + "," + csvField(std::filesystem::path(spec.scene).stem().string()) +
+                     "," + csvField(spec.engine) + "," + csvField(row.run.config) + "," + csvField(row.run.knob) +
+                     "," + csvField(row.run.value) + "," + std::to_string(row.steps) + "," + number(row.msPerStep) +
+                     "," + number(row.msPerSimulatedSecond);
+  for (double e : row.errors) line += "," + number(e);
+  return line + "\n";
+}
+
+std::vector<std::vector<std::string>> readSweepCsv(const std::string& csvPath) {
+  std::vector<std::vector<std::string>> rows;
+  std::ifstream in(csvPath, std::ios::binary);
+  if (!in) return rows;
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  std::vector<std::string> row;
+  std::string field;
+  bool quoted = false;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const char c = s[k];
+    if (quoted) {
+      if (c == '"' && k + 1 < s.size() && s[k + 1] == '"') {
+        field += '"';
+        ++k;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        field += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      row.push_back(field);
+      field.clear();
+    } else if (c == '\n') {
+      row.push_back(field);
+      field.clear();
+      rows.push_back(row);
+      row.clear();
+    } else {
+      field += c;
+    }
+  }
+  return rows;  // a last line without its newline was cut short: it is not a row
+}
+
+std::vector<std::size_t> completedRuns(const SweepSpec& spec, const std::string& csvPath) {
+  const auto rows = readSweepCsv(csvPath);
+  std::vector<std::size_t> done;
+  if (rows.empty()) return done;
+  std::string header;
+  for (std::size_t k = 0; k < rows[0].size(); ++k) header += (k ? "," : "") + csvField(rows[0][k]);
+  if (header + "\n" != sweepCsvHeader(spec)) {
+    throw SceneError(csvPath, "", "its header is not the one this spec writes (" + header +
+                                      "); move it away or name another CSV");
+  }
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    if (rows[r].size() != rows[0].size()) continue;
+    done.push_back(static_cast<std::size_t>(std::strtoull(rows[r][0].c_str(), nullptr, 10)));
+  }
+  return done;
+}
+
+std::size_t runSweep(const SweepSpec& spec, const SweepOptions& options) {
+  const std::vector<SweepRun> all = sweepRuns(spec);
+  const std::vector<std::size_t> done = completedRuns(spec, options.csvPath);
+  const std::set<std::size_t> skip(done.begin(), done.end());
+  std::vector<SweepRun> todo;
+  for (const SweepRun& run : all) {
+    if (skip.count(run.index) != 0) continue;
+    if (!options.only.empty() &&
+        std::find(options.only.begin(), options.only.end(), run.index) == options.only.end()) {
+      continue;
+    }
+    todo.push_back(run);
+  }
+  for (std::size_t k : options.only) {
+    if (k >= all.size()) {
+      throw SceneError(spec.file, "", "run " + std::to_string(k) + " does not exist: the grid has " +
+                                          std::to_string(all.size()) + " runs (0 to " +
+                                          std::to_string(all.size() - 1) + ")");
+    }
+  }
+  if (todo.empty()) return 0;
+  {
+    std::error_code ec;
+    const std::filesystem::path parent = std::filesystem::path(options.csvPath).parent_path();
+    if (!parent.empty()) std::filesystem::create_directories(parent, ec);
+  }
+  if (done.empty() && !std::filesystem::exists(options.csvPath)) {
+    output_detail::writeFileOrThrow("sweep", options.csvPath, sweepCsvHeader(spec));
+  }
+  // Workers take runs in order; rows are appended in index order as soon as every earlier
+  // one is in, so an interrupted sweep leaves a CSV that resumes cleanly.
+  std::vector<SweepRow> rows(todo.size());
+  std::vector<bool> finished(todo.size(), false);
+  std::vector<std::string> failures(todo.size());
+  std::atomic<std::size_t> next{0};
+  std::mutex lock;
+  std::size_t written = 0, count = 0;
+  std::ofstream csv(options.csvPath, std::ios::binary | std::ios::app);
+  if (!csv) throw std::runtime_error("sweep: cannot append to '" + options.csvPath + "'");
+  const auto worker = [&] {
+    for (std::size_t k = next++; k < todo.size(); k = next++) {
+      SweepRow row;
+      std::string failure;
+      try {
+        row = runSweepRun(spec, todo[k]);
+      } catch (const std::exception& e) {
+        failure = e.what();
+      }
+      std::lock_guard<std::mutex> guard(lock);
+      rows[k] = row;
+      failures[k] = failure;
+      finished[k] = true;
+      ++count;
+      if (options.progress && failure.empty()) options.progress(count, todo.size(), row);
+      while (written < todo.size() && finished[written] && failures[written].empty()) {
+        csv << sweepCsvLine(spec, rows[written]) << std::flush;
+        ++written;
+      }
+    }
+  };
+  const int jobs = std::max(1, std::min<int>(options.jobs, static_cast<int>(todo.size())));
+  std::vector<std::thread> threads;
+  for (int j = 1; j < jobs; ++j) threads.emplace_back(worker);
+  worker();
+  for (std::thread& t : threads) t.join();
+  for (std::size_t k = 0; k < todo.size(); ++k) {
+    if (!failures[k].empty()) {
+      throw std::runtime_error("run " + std::to_string(todo[k].index) + " failed: " + failures[k]);
+    }
+  }
+  return todo.size();
+}
+
+std::vector<std::size_t> paretoFront(const std::vector<double>& cost, const std::vector<double>& error) {
+  std::vector<std::size_t> order(cost.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return cost[a] != cost[b] ? cost[a] < cost[b] : error[a] < error[b];
+  });
+  std::vector<std::size_t> front;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t k : order) {
+    if (error[k] < best) {
+      front.push_back(k);
+      best = error[k];
+    }
+  }
+  return front;
+}
+
+std::string sweepParetoTable(const SweepSpec& spec, const std::string& csvPath) {
+  const auto rows = readSweepCsv(csvPath);
+  std::ostringstream md;
+  md << "| error | within | cheapest setting | its error | ms per simulated s |\n|---|---|---|---|---|\n";
+  for (std::size_t e = 0; e < spec.errors.size(); ++e) {
+    for (const double bound : {1e-2, 1e-3, 1e-4}) {
+      std::size_t best = 0;
+      double bestCost = std::numeric_limits<double>::infinity();
+      for (std::size_t r = 1; r < rows.size(); ++r) {
+        if (rows[r].size() != rows[0].size()) continue;
+        const double err = std::strtod(rows[r][9 + e].c_str(), nullptr);
+        const double cost = std::strtod(rows[r][8].c_str(), nullptr);
+        if (err <= bound && cost < bestCost) {
+          best = r;
+          bestCost = cost;
+        }
+      }
+      char within[32];
+      std::snprintf(within, sizeof within, "%g %s", spec.errors[e].relative && spec.errors[e].hasExpected ? bound * 100.0 : bound,
+                    spec.errors[e].relative && spec.errors[e].hasExpected ? "%" : "");
+      md << "| " << spec.errors[e].name << " | " << within << " | ";
+      if (best == 0) {
+        md << "none | | |\n";
+        continue;
+      }
+      char err[32], cost[32];
+      std::snprintf(err, sizeof err, "%.3g", std::strtod(rows[best][9 + e].c_str(), nullptr));
+      std::snprintf(cost, sizeof cost, "%.3g", bestCost);
+      md << rows[best][4] << " = " << rows[best][5] << (rows[best][3] == "-" ? "" : ", " + rows[best][3]) << " | "
+         << err << " | " << cost << " |\n";
+    }
+  }
+  return md.str();
+}
+
+std::vector<std::string> plotSweep(const SweepSpec& spec, const std::string& csvPath, const std::string& prefix) {
+  const auto rows = readSweepCsv(csvPath);
+  if (rows.size() < 2) throw std::runtime_error("plotSweep: '" + csvPath + "' has no rows");
+  const std::size_t costColumn = 8, firstError = 9;
+  // Lines: one per config, points in the order of the first knob's values.
+  std::map<std::string, std::vector<std::size_t>> lines;
+  std::vector<std::string> configs;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    if (rows[r].size() != rows[0].size()) continue;
+    if (lines.find(rows[r][3]) == lines.end()) configs.push_back(rows[r][3]);
+    lines[rows[r][3]].push_back(r);
+  }
+  std::ostringstream gp;
+  gp << "set terminal svg size 720,480 dynamic font 'sans,12'\nset logscale xy\nset grid\n"
+     << "set xlabel 'ms of computation per simulated second'\nset key outside right top\n";
+  std::vector<std::string> svgs;
+  for (std::size_t e = 0; e < spec.errors.size(); ++e) {
+    const std::string name = fileStem(spec.errors[e].name);
+    const std::string data = prefix + "_" + name + ".dat";
+    std::ostringstream out;
+    std::vector<double> cost, error;
+    std::vector<std::size_t> rowOf;
+    for (const std::string& c : configs) {
+      out << "# " << c << "\n";
+      for (std::size_t r : lines[c]) {
+        const double x = std::strtod(rows[r][costColumn].c_str(), nullptr);
+        const double y = std::strtod(rows[r][firstError + e].c_str(), nullptr);
+        out << number(x) << " " << number(std::max(y, 1e-17)) << " \"" << rows[r][5] << "\"\n";
+        cost.push_back(x);
+        error.push_back(y);
+        rowOf.push_back(r);
+      }
+      out << "\n\n";
+    }
+    out << "# Pareto front\n";
+    for (std::size_t k : paretoFront(cost, error)) {
+      out << number(cost[k]) << " " << number(std::max(error[k], 1e-17)) << " \"\"\n";
+    }
+    output_detail::writeFileOrThrow("plotSweep", data, out.str());
+    const std::string svg = prefix + "_" + name + ".svg";
+    gp << "set output '" << svg << "'\nset ylabel '" << spec.errors[e].name << "'\nset title '"
+       << spec.name << ": " << spec.knobs.front().key << " along each line'\nplot ";
+    for (std::size_t c = 0; c < configs.size(); ++c) {
+      gp << "'" << data << "' index " << c << " using 1:2 with linespoints pt 7 title '" << configs[c]
+         << "', '" << data << "' index " << c << " using 1:2:3 with labels offset 0.8,0.6 font 'sans,9' notitle, ";
+    }
+    gp << "'" << data << "' index " << configs.size()
+       << " using 1:2 with lines dashtype 2 lw 2 lc rgb '#444444' title 'Pareto front'\n";
+    svgs.push_back(svg);
+  }
+  output_detail::writeFileOrThrow("plotSweep", prefix + "_pareto.md", sweepParetoTable(spec, csvPath));
+  const std::string script = prefix + ".gp";
+  output_detail::writeFileOrThrow("plotSweep", script, gp.str());
+  const std::string command = "gnuplot '" + script + "' 2>&1";
+  std::FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) throw std::runtime_error("plotSweep: cannot start gnuplot");
+  std::string said;
+  char buffer[256];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) said += buffer;
+  const int status = pclose(pipe);
+  if (status != 0) {
+    throw std::runtime_error("plotSweep: gnuplot failed on '" + script + "' (is gnuplot-nox installed?): " + said);
+  }
+  return svgs;
+}
+
+}  // namespace stackbook

@@ -1,0 +1,139 @@
+#pragma once
+/// \file
+/// \brief Parameter sweeps (chapter 11): a small JSON spec names a scene, the knobs to vary
+/// and their values, and the error measures; the sweep runs the grid of runs (each
+/// independent and deterministic), writes one CSV row per run with its cost and its errors,
+/// resumes from the rows already written, and draws error against cost with gnuplot.
+/// The format is the chapter's (\ref ch11_sweep).
+
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "stackbook/scene/simulation.hpp"
+
+namespace stackbook {
+
+// [sweep_spec]
+/// One knob of a sweep: a scene field (a --set key such as `dt` or `solver.rotation`) and
+/// the values it takes, each a JSON value.
+struct SweepKnob {
+  std::string key;
+  std::vector<nlohmann::json> values;
+};
+
+/// One error measure of a run, computed from its recording (chapter 11):
+/// - `position`, `velocity`, `angularVelocity`: component `axis` of body `body` at the end;
+/// - `energyDrift`: the largest |E(t) - E(0)| over the frames, divided by |E(0)|;
+/// - `maxPenetration`: the deepest interpenetration over the frames (m);
+/// - `rollingStart`: the first frame time at which body `body` (a ball of `radius`) stops
+///   slipping on a floor below it: |v + omega x (-radius up)| < `tolerance`;
+/// - `flipPeriod`: twice the mean time between sign changes of component `axis` of body
+///   `body`'s body-frame angular velocity (3D).
+/// With `expected` given the error is |value - expected|, divided by |expected| when
+/// `relative` (the default), else the value itself.
+struct SweepError {
+  std::string name;
+  std::string quantity;
+  int body = 0;
+  int axis = 0;
+  double radius = 0.0;
+  double tolerance = 1e-6;
+  bool hasExpected = false;
+  double expected = 0.0;
+  bool relative = true;
+};
+
+struct SweepSpec {
+  std::string file;      ///< the spec's path
+  std::string name;      ///< names the CSV and plots (default: the spec's stem)
+  std::string scene;     ///< the scene's path (resolved against the spec's folder)
+  std::string engine = "stackbook";
+  std::vector<std::string> sets;  ///< fixed overrides of every run
+  std::vector<SweepKnob> knobs;   ///< the first is plotted along each line, the rest make the lines
+  std::vector<SweepError> errors;
+};
+// [sweep_spec]
+
+/// Reads and checks a sweep spec. Every problem is a SceneError naming the spec file, the
+/// JSON pointer of the field and what is wrong (one line), like a scene file's.
+SweepSpec loadSweepSpec(const std::string& path);
+/// The same from a parsed document; `file` names it in messages.
+SweepSpec parseSweepSpec(const nlohmann::json& document, const std::string& file);
+
+// [sweep_run]
+/// One run of the grid: its index, the overrides that make it, and its labels.
+struct SweepRun {
+  std::size_t index = 0;
+  std::vector<std::string> overrides;  ///< spec.sets, then key=value for each knob
+  std::string config;                  ///< the other knobs' key=value, joined by ';' ("-" if none)
+  std::string knob;                    ///< the first knob's key
+  std::string value;                   ///< its value as JSON text
+};
+
+/// The grid of runs: the Cartesian product of the knobs' values, the first knob varying
+/// fastest, so that the runs of one line are adjacent.
+std::vector<SweepRun> sweepRuns(const SweepSpec& spec);
+
+/// The measured row of one run.
+struct SweepRow {
+  SweepRun run;
+  std::int64_t steps = 0;
+  double msPerStep = 0.0;
+  double msPerSimulatedSecond = 0.0;
+  std::vector<double> errors;  ///< one per spec error, in order
+};
+
+/// Loads the run's scene with its overrides (frames after every step when an error needs
+/// them), runs it and measures every error. Cost is the step's own time (the counters'
+/// totalSeconds), not the recording's. Throws SceneError for a bad override.
+SweepRow runSweepRun(const SweepSpec& spec, const SweepRun& run);
+// [sweep_run]
+
+/// The CSV header: run,scene,engine,config,knob,value,steps,ms_per_step,ms_per_simulated_second,<errors>.
+std::string sweepCsvHeader(const SweepSpec& spec);
+/// One CSV line (with its newline) for a row.
+std::string sweepCsvLine(const SweepSpec& spec, const SweepRow& row);
+/// The run indices already present in a sweep CSV (empty if the file does not exist).
+/// Throws SceneError if its header is not this spec's.
+std::vector<std::size_t> completedRuns(const SweepSpec& spec, const std::string& csvPath);
+
+/// What runSweep() does.
+struct SweepOptions {
+  std::string csvPath;             ///< where rows are appended
+  int jobs = 2;                    ///< runs at once (each run single-threaded)
+  std::vector<std::size_t> only;   ///< run just these indices (empty: all)
+  /// Called after each finished run with (done, total, row).
+  std::function<void(std::size_t, std::size_t, const SweepRow&)> progress;
+};
+
+/// Runs every run of the grid not yet in the CSV (resume), `jobs` at a time, and appends
+/// their rows in index order. Returns the number of runs made.
+std::size_t runSweep(const SweepSpec& spec, const SweepOptions& options);
+
+/// The rows of a sweep CSV as text fields (header first).
+std::vector<std::vector<std::string>> readSweepCsv(const std::string& csvPath);
+
+/// Draws, for every error measure, the error against the cost (ms per simulated second),
+/// log-log, one line per config with each point labelled by its knob value, and the Pareto
+/// front (the runs no other run beats on both axes) marked: writes `<prefix>_<k>.dat` data,
+/// `<prefix>.gp` and runs gnuplot on it, giving one SVG per error, `<prefix>_<error name>.svg`
+/// (spaces as '_'), and the table of sweepParetoTable() as `<prefix>_pareto.md`. Returns the
+/// SVG paths. Throws std::runtime_error if gnuplot fails.
+std::vector<std::string> plotSweep(const SweepSpec& spec, const std::string& csvPath,
+                                   const std::string& prefix);
+
+/// A Markdown table of the cheapest run within 1 %, 0.1 % and 0.01 % of each error measure
+/// (error <= 1e-2, 1e-3, 1e-4: relative errors, or metres / seconds for absolute ones), with
+/// its setting and its cost, read from a sweep CSV; "none" where no run gets there.
+std::string sweepParetoTable(const SweepSpec& spec, const std::string& csvPath);
+
+/// The Pareto front of (cost, error) points: indices of the points no other point beats
+/// on both (lower or equal cost and error, one strictly), sorted by cost.
+std::vector<std::size_t> paretoFront(const std::vector<double>& cost, const std::vector<double>& error);
+
+}  // namespace stackbook

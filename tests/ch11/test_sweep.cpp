@@ -1,0 +1,222 @@
+// Chapter 11 (the sweep command): the spec parser's one-line errors, a tiny sweep's rows,
+// resuming, determinism, the independent command lines of --list, and the first-order
+// claim the chapter makes about the time step.
+#include <doctest/doctest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "stackbook/body/torque_free.hpp"
+#include "stackbook/scene/sweep.hpp"
+
+using namespace stackbook;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("stackbook_ch11_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+/// A ball dropped from rest for 0.1 s (no floor): semi-implicit Euler gives v = -g T exactly
+/// and z = z0 - g T^2/2 - g T dt/2, an error of exactly first order in dt.
+const char* kFallScene = R"({"dimension": 3, "gravity": [0, 0, -10], "dt": 0.001, "duration": 0.1,
+  "bodies": [{"name": "ball", "shape": {"type": "sphere", "radius": 0.1}, "mass": 1,
+              "position": [0, 0, 1]}]})";
+
+const char* kFallSpec = R"({"name": "fall", "scene": "fall.json",
+  "knobs": [{"key": "dt", "values": [0.004, 0.002, 0.001]},
+            {"key": "solver.contactIterations", "values": [10, 5]}],
+  "errors": [{"name": "height", "quantity": "position", "body": 0, "axis": 2, "expected": 0.95},
+             {"name": "speed", "quantity": "velocity", "body": 0, "axis": 2, "expected": -1.0}]})";
+
+std::string specError(const std::string& text) {
+  const fs::path dir = scratch("spec_error");
+  write(dir / "fall.json", kFallScene);
+  write(dir / "bad.json", text);
+  try {
+    loadSweepSpec((dir / "bad.json").string());
+  } catch (const SceneError& e) {
+    const std::string what = e.what();
+    CHECK(what.find('\n') == std::string::npos);
+    CHECK(what.rfind((dir / "bad.json").string(), 0) == 0);  // starts with the file
+    return what.substr((dir / "bad.json").string().size());
+  }
+  FAIL("no error for " << text);
+  return "";
+}
+
+fs::path programPath() {
+  fs::path dir = fs::read_symlink("/proc/self/exe").parent_path();
+  for (; !dir.empty() && dir != dir.root_path(); dir = dir.parent_path()) {
+    std::error_code ec;
+    if (fs::is_regular_file(dir / "stackbook", ec)) return dir / "stackbook";
+  }
+  return {};
+}
+
+}  // namespace
+
+TEST_SUITE(STACKBOOK_CHAPTER) {
+
+// [test_sweep_parser]
+TEST_CASE("sweep spec errors are one line naming the file, the field and what is wrong") {
+  CHECK(specError("{\"scene\": \"fall.json\", \"knobs\": [}") .rfind(": line 1, column ", 0) == 0);
+  CHECK(specError(R"({"knobs": [{"key": "dt", "values": [1e-3]}], "errors": [{"quantity": "energyDrift"}]})") ==
+        ": missing field \"scene\"");
+  CHECK(specError(R"({"scene": "fall.json", "knobs": [{"key": "dt", "value": [1e-3]}], "errors": [{"quantity": "energyDrift"}]})") ==
+        ": /knobs/0/value: unknown field (did you mean \"values\"?)");
+  CHECK(specError(R"({"scene": "fall.json", "knobs": [{"key": "dt", "values": []}], "errors": [{"quantity": "energyDrift"}]})") ==
+        ": /knobs/0/values: must be a non-empty array");
+  CHECK(specError(R"({"scene": "fall.json", "knobs": [{"key": "dt", "values": [1e-3]}], "errors": [{"quantity": "energyDrfit"}]})") ==
+        ": /errors/0/quantity: unknown quantity \"energyDrfit\" (did you mean \"energyDrift\"?)");
+  CHECK(specError(R"({"scene": "fall.json", "knobs": [{"key": "dt", "values": [1e-3]}], "errors": [{"quantity": "rollingStart"}]})") ==
+        ": /errors/0: missing field \"radius\" (rollingStart needs the ball's radius)");
+  CHECK(specError(R"({"scene": "fall.json", "knobs": [{"key": "dt", "values": [1e-3]}], "errors": [{"quantity": "position", "axis": 3}]})") ==
+        ": /errors/0/axis: must be 0, 1 or 2, got 3");
+  CHECK(specError(R"({"scene": "fall.json", "knobs": [{"key": "dt", "values": [1e-3]}, {"key": "dt", "values": [2]}], "errors": [{"quantity": "maxPenetration"}]})") ==
+        ": /knobs/1/key: \"dt\" is already a knob");
+}
+// [test_sweep_parser]
+
+// [test_sweep_rows]
+TEST_CASE("a tiny sweep writes one row per run, resumes without rerunning, and is deterministic") {
+  const fs::path dir = scratch("sweep_rows");
+  write(dir / "fall.json", kFallScene);
+  write(dir / "fall_sweep.json", kFallSpec);
+  const SweepSpec spec = loadSweepSpec((dir / "fall_sweep.json").string());
+  const std::vector<SweepRun> runs = sweepRuns(spec);
+  REQUIRE(runs.size() == 6);
+  CHECK(runs[1].knob == "dt");
+  CHECK(runs[1].value == "0.002");
+  CHECK(runs[1].config == "solver.contactIterations=10");
+  CHECK(runs[4].config == "solver.contactIterations=5");
+
+  SweepOptions options;
+  options.csvPath = (dir / "out" / "fall.csv").string();
+  options.jobs = 2;
+  CHECK(runSweep(spec, options) == 6);
+  const auto rows = readSweepCsv(options.csvPath);
+  REQUIRE(rows.size() == 7);
+  CHECK(rows[0] == std::vector<std::string>{"run", "scene", "engine", "config", "knob", "value", "steps",
+                                            "ms_per_step", "ms_per_simulated_second", "height", "speed"});
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    CHECK(rows[r][0] == std::to_string(r - 1));  // index order, whichever worker finished first
+    CHECK(rows[r][1] == "fall");
+    CHECK(rows[r][2] == "stackbook");
+  }
+  // The closed forms: speed exact, height off by g T dt / 2 (relative to 0.95).
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    const double dt = std::stod(rows[r][5]);
+    CHECK(std::stod(rows[r][6]) == std::lround(0.1 / dt));
+    CHECK(std::stod(rows[r][9]) == doctest::Approx(10.0 * 0.1 * dt / 2.0 / 0.95).epsilon(1e-9));
+    CHECK(std::stod(rows[r][10]) < 1e-12);
+  }
+  // Resume: nothing left to do; a lost row is remade, identical to the first time.
+  CHECK(runSweep(spec, options) == 0);
+  std::ifstream in(options.csvPath);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  in.close();
+  std::ofstream cut(options.csvPath, std::ios::trunc);
+  for (std::size_t k = 0; k + 2 < lines.size(); ++k) cut << lines[k] << "\n";
+  cut.close();
+  CHECK(runSweep(spec, options) == 2);
+  const auto again = readSweepCsv(options.csvPath);
+  REQUIRE(again.size() == 7);
+  for (std::size_t r = 1; r < again.size(); ++r) {
+    CHECK(again[r][0] == rows[r][0]);
+    CHECK(again[r][9] == rows[r][9]);  // errors bit-identical (the costs are wall time)
+    CHECK(again[r][10] == rows[r][10]);
+  }
+}
+// [test_sweep_rows]
+
+TEST_CASE("the time step's error is first order: halving dt halves the height error") {
+  const fs::path dir = scratch("sweep_order");
+  write(dir / "fall.json", kFallScene);
+  write(dir / "fall_sweep.json", kFallSpec);
+  const SweepSpec spec = loadSweepSpec((dir / "fall_sweep.json").string());
+  const std::vector<SweepRun> runs = sweepRuns(spec);
+  const double e4 = runSweepRun(spec, runs[0]).errors[0], e2 = runSweepRun(spec, runs[1]).errors[0],
+               e1 = runSweepRun(spec, runs[2]).errors[0];
+  CHECK(e4 / e2 == doctest::Approx(2.0).epsilon(1e-6));
+  CHECK(e2 / e1 == doctest::Approx(2.0).epsilon(1e-6));
+}
+
+TEST_CASE("the chapter's sweep specs load, and their expected values are the closed forms") {
+  const std::string dir = std::string(STACKBOOK_SOURCE_DIR) + "/docs/sweeps/";
+  const double v0 = 5.0, mu = 0.2, g = 9.81;
+  const SweepSpec ball = loadSweepSpec(dir + "slide_roll_3d_sweep.json");
+  CHECK(ball.errors.at(0).expected == doctest::Approx(5.0 * v0 / 7.0).epsilon(1e-15));
+  CHECK(ball.errors.at(1).expected == doctest::Approx(2.0 * v0 / (7.0 * mu * g)).epsilon(1e-15));
+  const SweepSpec disk = loadSweepSpec(dir + "slide_roll_2d_sweep.json");
+  CHECK(disk.errors.at(0).expected == doctest::Approx(2.0 * v0 / 3.0).epsilon(1e-15));
+  CHECK(disk.errors.at(1).expected == doctest::Approx(v0 / (3.0 * mu * g)).epsilon(1e-15));
+  const SweepSpec box = loadSweepSpec(dir + "tumbling_box_sweep.json");
+  const Vec3 I = Vec3(0.4 * 0.4 + 0.6 * 0.6, 0.2 * 0.2 + 0.6 * 0.6, 0.2 * 0.2 + 0.4 * 0.4) / 12.0;
+  const TorqueFreeInvariants inv = torqueFreeInvariants(I, Vec3(0.1, 10.0, 0.1));
+  CHECK(box.errors.at(0).expected ==
+        doctest::Approx(polhodePeriod(I, inv.energy, inv.momentumSquared).period).epsilon(1e-12));
+  for (const SweepSpec* spec : {&ball, &disk, &box}) CHECK_NOTHROW(loadScene(spec->scene));
+}
+
+TEST_CASE("the Pareto front keeps the runs no other run beats on both cost and error") {
+  const std::vector<double> cost = {1.0, 2.0, 3.0, 2.5, 4.0};
+  const std::vector<double> error = {0.5, 0.2, 0.3, 0.1, 0.1};
+  CHECK(paretoFront(cost, error) == std::vector<std::size_t>{0, 1, 3});
+}
+
+TEST_CASE("`stackbook sweep --list` prints one independent command line per run, and a bad spec "
+          "is one line on stderr with exit code 2") {
+  const fs::path program = programPath();
+  REQUIRE_MESSAGE(!program.empty(), "the stackbook program is not built");
+  const fs::path dir = scratch("sweep_list");
+  write(dir / "fall.json", kFallScene);
+  write(dir / "fall_sweep.json", kFallSpec);
+  const std::string out = (dir / "list.txt").string(), err = (dir / "err.txt").string();
+  const std::string list = "cd '" + dir.string() + "' && '" + program.string() + "' sweep fall_sweep.json --list >'" +
+                           out + "' 2>'" + err + "'";
+  REQUIRE(std::system(list.c_str()) == 0);
+  std::ifstream in(out);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  REQUIRE(lines.size() == 6);
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    CHECK(lines[k] == "stackbook sweep fall_sweep.json --csv stackbook-out/sweeps/fall.csv --no-plot --jobs 1 --run " +
+                          std::to_string(k));
+  }
+  // Run two of the listed lines as a cluster would, each on its own: two rows.
+  for (const std::size_t k : {std::size_t{4}, std::size_t{1}}) {
+    std::string line = lines[k];
+    line.replace(0, std::string("stackbook").size(), "'" + program.string() + "'");
+    REQUIRE(std::system(("cd '" + dir.string() + "' && " + line + " >/dev/null 2>&1").c_str()) == 0);
+  }
+  const auto rows = readSweepCsv((dir / "stackbook-out" / "sweeps" / "fall.csv").string());
+  REQUIRE(rows.size() == 3);
+  CHECK(rows[1][0] == "4");
+  CHECK(rows[2][0] == "1");
+
+  write(dir / "bad.json", R"({"scene": "fall.json", "knobs": [{"key": "dt", "values": 3}], "errors": []})");
+  const std::string bad = "cd '" + dir.string() + "' && '" + program.string() + "' sweep bad.json >'" + out +
+                          "' 2>'" + err + "'";
+  const int status = std::system(bad.c_str());
+  CHECK(WEXITSTATUS(status) == 2);
+  std::ifstream e(err);
+  std::string message((std::istreambuf_iterator<char>(e)), std::istreambuf_iterator<char>());
+  CHECK(message == "stackbook: error: bad.json: /knobs/0/values: must be a non-empty array\n");
+}
+
+}  // TEST_SUITE
