@@ -87,7 +87,7 @@ int main() {
   writeTrajectoryCsv<2>(std::get<RunResult<2>>(run).recording, csv);
   std::ifstream in(csv);
   std::string line;
-  std::getline(in, line);  // header: time,body,name,x,y,angle
+  std::getline(in, line);  // header: time,body,name,x,y,angle,vx,vy,omega
   std::map<int, std::array<double, 2>> start;
   while (std::getline(in, line)) {
     std::stringstream fields(line);

@@ -142,7 +142,7 @@ TEST_CASE_TEMPLATE("deepest-point query of each convex primitive against a flat 
                    T, std::integral_constant<int, 2>, std::integral_constant<int, 3>) {
   constexpr int D = T::value;
   // A floor (a big box) in its own frame; each shape turned and placed above it.
-  const BoxShape<D> floor = makeBoxShape<D>(Vec<D>::Constant(100.0));
+  const BoxShape<D> ground = makeBoxShape<D>(Vec<D>::Constant(100.0));
   Mat<D> M = Mat<D>::Identity();
   if constexpr (D == 3) {
     M = Eigen::AngleAxisd(0.3, Vec3(1.0, 0.5, 0.2).normalized()).toRotationMatrix();
@@ -153,8 +153,8 @@ TEST_CASE_TEMPLATE("deepest-point query of each convex primitive against a flat 
   t[D - 1] = 50.5;  // 0.5 m above the floor's top face at 50
   const auto check = [&](const Shape<D>& shape) {
     CAPTURE(shape.describe());
-    Vec<D> p;
-    REQUIRE(shape.deepestPoint(floor, M, t, p));
+    Vec<D> p = Vec<D>::Zero();
+    REQUIRE(shape.deepestPoint(ground, M, t, p));
     CHECK(std::abs(shape.signedDistance(p)) < 1e-12);
     // No sample is lower than the deepest point.
     const double lowest = (M * p + t)[D - 1];
@@ -166,8 +166,8 @@ TEST_CASE_TEMPLATE("deepest-point query of each convex primitive against a flat 
   check(makeCylinderShape<D>(0.2, 0.15));
   CHECK(makeSphereShape<D>(0.3).deepestPointIsWholeContact());
   CHECK_FALSE(makeBoxShape<D>(Vec<D>::Constant(0.4)).deepestPointIsWholeContact());
-  Vec<D> p;
-  CHECK_FALSE(makeTorusShape<D>(0.3, 0.1).deepestPoint(floor, M, t, p));
+  Vec<D> p = Vec<D>::Zero();
+  CHECK_FALSE(makeTorusShape<D>(0.3, 0.1).deepestPoint(ground, M, t, p));
 }
 
 }  // TEST_SUITE

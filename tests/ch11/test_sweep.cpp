@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 
@@ -120,7 +121,7 @@ TEST_CASE("a tiny sweep writes one row per run, resumes without rerunning, and i
   // The closed forms: speed exact, height off by g T dt / 2 (relative to 0.95).
   for (std::size_t r = 1; r < rows.size(); ++r) {
     const double dt = std::stod(rows[r][5]);
-    CHECK(std::stod(rows[r][6]) == std::lround(0.1 / dt));
+    CHECK(std::stod(rows[r][6]) == static_cast<double>(std::lround(0.1 / dt)));
     CHECK(std::stod(rows[r][9]) == doctest::Approx(10.0 * 0.1 * dt / 2.0 / 0.95).epsilon(1e-9));
     CHECK(std::stod(rows[r][10]) < 1e-12);
   }

@@ -127,7 +127,7 @@ bool appendDeepestPoint(const CollisionBody<D>& owner, int ownerIndex,
                         std::int64_t& found) {
   if (settings.surfaceQuery != SurfaceQuery::DeepestPoint) return false;
   const Shape<D>& shapeB = *penetrated.shape;
-  Vec<D> p;
+  Vec<D> p = Vec<D>::Zero();
   if (!owner.shape->deepestPoint(shapeB, M, t, p)) return false;
   const Vec<D> xB = M * p + t;  // Eq. (7.2)
   ++queries;

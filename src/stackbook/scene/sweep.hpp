@@ -94,7 +94,8 @@ struct SweepRow {
 SweepRow runSweepRun(const SweepSpec& spec, const SweepRun& run);
 // [sweep_run]
 
-/// The CSV header: run,scene,engine,config,knob,value,steps,ms_per_step,ms_per_simulated_second,<errors>.
+/// The CSV header: `run,scene,engine,config,knob,value,steps,ms_per_step,ms_per_simulated_second`
+/// and one column per error, named as the error.
 std::string sweepCsvHeader(const SweepSpec& spec);
 /// One CSV line (with its newline) for a row.
 std::string sweepCsvLine(const SweepSpec& spec, const SweepRow& row);
