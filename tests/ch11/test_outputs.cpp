@@ -43,7 +43,7 @@ std::int64_t countFrames(double frameRate, double dt, std::int64_t steps, bool& 
 TEST_SUITE(STACKBOOK_CHAPTER) {
 
 // [test_frame_count]
-TEST_CASE("frameRate = 1/dt records a frame after every step: 100,000 steps, 100,001 frames") {
+TEST_CASE("frameRate = 1/dt records a frame after every step: 100 000 steps and 100 001 frames") {
   for (const double dt : {1e-3, 1e-4, 1.0 / 60.0, 7e-4, 3e-3}) {
     CAPTURE(dt);
     bool consecutive = false;
@@ -59,7 +59,7 @@ TEST_CASE("frameRate = 1/dt records a frame after every step: 100,000 steps, 100
 }
 // [test_frame_count]
 
-TEST_CASE("a run at frameRate = 1/dt records every step's time exactly, and velocities and energies") {
+TEST_CASE("a run at frameRate = 1/dt records every step's time exactly and and velocities and energies") {
   // A ball in free fall from rest: v = -g t at frame t = n dt (semi-implicit Euler is exact
   // for velocity), E = K + U constant up to the integrator's first-order position error.
   const std::string text = R"({"dimension": 3, "gravity": [0, 0, -9.81], "dt": 0.001, "duration": 0.05,

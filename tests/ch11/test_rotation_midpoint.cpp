@@ -93,7 +93,7 @@ TEST_SUITE(STACKBOOK_CHAPTER) {
 
 // [test_midpoint_flips]
 TEST_CASE("implicit midpoint: a box spun near its intermediate axis flips with the Landau-Lifshitz "
-          "period for 100 s at dt = 1e-3, and keeps its energy within 1 %") {
+          "period for 100 s at dt = 1e-3 and and keeps its energy within 1 %") {
   const Vec3 omega0(0.1, 10.0, 0.1);
   const double T = landauPeriod(omega0);
   const Tumble t = tumble(omega0, 1e-3, 100.0, RotationUpdate::ImplicitMidpoint);
@@ -151,7 +151,7 @@ TEST_CASE("implicit midpoint: spins about the largest and the smallest axis stay
   }
 }
 
-TEST_CASE("both rotation rules leave the world angular momentum untouched; the exponential map "
+TEST_CASE("both rotation rules leave the world angular momentum untouched: the exponential map "
           "selected is the old update bit for bit") {
   const Vec3 omega0(0.3, 1.0, 0.3);
   for (const RotationUpdate rule : {RotationUpdate::ExponentialMap, RotationUpdate::ImplicitMidpoint}) {
@@ -175,7 +175,7 @@ TEST_CASE("both rotation rules leave the world angular momentum untouched; the e
   CHECK(a.angularVelocity == b.angularVelocity);
 }
 
-TEST_CASE("implicit midpoint: predictPose gives the pose advancePosition reaches; in 2D both rules agree") {
+TEST_CASE("implicit midpoint: predictPose gives the pose advancePosition reaches: in 2D both rules agree") {
   RigidBody<3> box = spinningBox(Vec3(0.1, 10.0, 0.1));
   box.velocity = Vec3(0.5, 0.0, -1.0);
   const Pose<3> predicted = predictPose<3>(box, 1e-3, RotationUpdate::ImplicitMidpoint);

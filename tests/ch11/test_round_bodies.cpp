@@ -119,7 +119,7 @@ TEST_SUITE(STACKBOOK_CHAPTER) {
 
 // [test_slide_then_roll]
 TEST_CASE_TEMPLATE("deepest-point query: a ball launched sliding at 5 m/s with mu = 0.2 rolls "
-                   "off at the closed-form time and speed, without hopping",
+                   "off at the closed-form time and speed and without hopping",
                    T, std::integral_constant<int, 2>, std::integral_constant<int, 3>) {
   constexpr int D = T::value;
   const double v0 = 5.0, mu = 0.2;

@@ -73,7 +73,7 @@ fs::path programPath() {
 TEST_SUITE(STACKBOOK_CHAPTER) {
 
 // [test_sweep_parser]
-TEST_CASE("sweep spec errors are one line naming the file, the field and what is wrong") {
+TEST_CASE("sweep spec errors are one line naming the file and the field and what is wrong") {
   CHECK(specError("{\"scene\": \"fall.json\", \"knobs\": [}") .rfind(": line 1, column ", 0) == 0);
   CHECK(specError(R"({"knobs": [{"key": "dt", "values": [1e-3]}], "errors": [{"quantity": "energyDrift"}]})") ==
         ": missing field \"scene\"");
@@ -93,7 +93,7 @@ TEST_CASE("sweep spec errors are one line naming the file, the field and what is
 // [test_sweep_parser]
 
 // [test_sweep_rows]
-TEST_CASE("a tiny sweep writes one row per run, resumes without rerunning, and is deterministic") {
+TEST_CASE("a tiny sweep writes one row per run and resumes without rerunning and and is deterministic") {
   const fs::path dir = scratch("sweep_rows");
   write(dir / "fall.json", kFallScene);
   write(dir / "fall_sweep.json", kFallSpec);
@@ -157,7 +157,7 @@ TEST_CASE("the time step's error is first order: halving dt halves the height er
   CHECK(e2 / e1 == doctest::Approx(2.0).epsilon(1e-6));
 }
 
-TEST_CASE("the chapter's sweep specs load, and their expected values are the closed forms") {
+TEST_CASE("the chapter's sweep specs load and and their expected values are the closed forms") {
   const std::string dir = std::string(STACKBOOK_SOURCE_DIR) + "/docs/sweeps/";
   const double v0 = 5.0, mu = 0.2, g = 9.81;
   const SweepSpec ball = loadSweepSpec(dir + "slide_roll_3d_sweep.json");
@@ -180,7 +180,7 @@ TEST_CASE("the Pareto front keeps the runs no other run beats on both cost and e
   CHECK(paretoFront(cost, error) == std::vector<std::size_t>{0, 1, 3});
 }
 
-TEST_CASE("`stackbook sweep --list` prints one independent command line per run, and a bad spec "
+TEST_CASE("stackbook sweep --list prints one independent command line per run and and a bad spec "
           "is one line on stderr with exit code 2") {
   const fs::path program = programPath();
   REQUIRE_MESSAGE(!program.empty(), "the stackbook program is not built");
