@@ -219,7 +219,8 @@ int main(int argc, char** argv) {
   }
 
   std::printf("peers_bench: each engine's run repeated (column runs), alternating the engines; ms/step min is the "
-              "fastest run's mean step, median is over every step\n");
+              "fastest run's mean step, median is over every step (wall time); CPU ms/step is the median step's "
+              "process CPU time, which a loaded machine does not inflate\n");
   printPeers();
   std::printf("\n");
   printTableHeader(stdout);
@@ -273,16 +274,19 @@ int main(int argc, char** argv) {
     }
     double peerMs = -1.0;
     double peerMedian = -1.0;
+    double peerCpu = -1.0;
     for (const Column& c : columns) {
       if (c.row.isPeer) {
         peerMs = minMsPerStep(c.row);
         peerMedian = medianMsPerStep(c.row);
+        peerCpu = medianCpuMsPerStep(c.row);
       }
     }
     for (Column& c : columns) {
       if (!c.row.isPeer && peerMs > 0.0 && minMsPerStep(c.row) > 0.0) {
         c.row.ratio = minMsPerStep(c.row) / peerMs;
         c.row.medianRatio = medianMsPerStep(c.row) / peerMedian;
+        c.row.cpuRatio = peerCpu > 0.0 ? medianCpuMsPerStep(c.row) / peerCpu : -1.0;
       }
       printTableRow(stdout, c.row);
       if (csv) printCsvRow(csv, c.row);

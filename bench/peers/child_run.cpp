@@ -5,6 +5,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <time.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstring>
@@ -50,6 +52,12 @@ bool readAll(int fd, void* data, std::size_t bytes) {
 [[noreturn]] void child(int fd, const std::function<std::unique_ptr<Engine>()>& make, long steps) {
   Header h;
   std::vector<double> times;
+  std::vector<double> cpu;
+  const auto cpuNow = [] {
+    timespec t{};
+    ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+  };
   try {
     using clock = std::chrono::steady_clock;
     const auto t0 = clock::now();
@@ -58,10 +66,13 @@ bool readAll(int fd, void* data, std::size_t bytes) {
     engine->startTiming();
     h.setupSeconds = std::chrono::duration<double>(clock::now() - t0).count();
     times.reserve(static_cast<std::size_t>(steps));
+    cpu.reserve(static_cast<std::size_t>(steps));
     for (long n = 0; n < steps; ++n) {
+      const double c = cpuNow();
       const auto a = clock::now();
       engine->step();
       times.push_back(std::chrono::duration<double>(clock::now() - a).count());
+      cpu.push_back(cpuNow() - c);
     }
     h.accuracy = engine->accuracy();
     h.work = engine->work();
@@ -70,7 +81,8 @@ bool readAll(int fd, void* data, std::size_t bytes) {
     std::snprintf(h.error, sizeof h.error, "%s", e.what());
   }
   h.steps = static_cast<long>(times.size());
-  const bool sent = writeAll(fd, &h, sizeof h) && writeAll(fd, times.data(), times.size() * sizeof(double));
+  const bool sent = writeAll(fd, &h, sizeof h) && writeAll(fd, times.data(), times.size() * sizeof(double)) &&
+                    writeAll(fd, cpu.data(), cpu.size() * sizeof(double));
   ::close(fd);
   ::_exit(sent ? 0 : 1);
 }
@@ -99,7 +111,12 @@ RunResult runInChild(const std::function<std::unique_ptr<Engine>()>& make, long 
   const bool gotHeader = readAll(fds[0], &h, sizeof h);
   if (gotHeader && h.steps > 0) {
     r.stepSeconds.resize(static_cast<std::size_t>(h.steps));
-    if (!readAll(fds[0], r.stepSeconds.data(), r.stepSeconds.size() * sizeof(double))) r.stepSeconds.clear();
+    r.stepCpuSeconds.resize(static_cast<std::size_t>(h.steps));
+    if (!readAll(fds[0], r.stepSeconds.data(), r.stepSeconds.size() * sizeof(double)) ||
+        !readAll(fds[0], r.stepCpuSeconds.data(), r.stepCpuSeconds.size() * sizeof(double))) {
+      r.stepSeconds.clear();
+      r.stepCpuSeconds.clear();
+    }
   }
   ::close(fds[0]);
   int status = 0;

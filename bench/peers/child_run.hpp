@@ -16,6 +16,9 @@ struct RunResult {
   bool ok = false;
   std::string error;               ///< why the run failed (when !ok)
   std::vector<double> stepSeconds; ///< wall time of each timed step
+  /// CPU time of each timed step (the process's, all threads): unlike the wall time it does
+  /// not count the time the step waited for a core on a loaded machine.
+  std::vector<double> stepCpuSeconds;
   Accuracy accuracy;
   Work work;
   double setupSeconds = 0.0;       ///< building (and forming) the scene

@@ -19,11 +19,14 @@ struct Row {
   std::vector<RunResult> runs;  ///< one per repetition
   double ratio = -1.0;          ///< this row's min ms/step over the peer's (stackbook rows)
   double medianRatio = -1.0;    ///< the same for the median steps
+  double cpuRatio = -1.0;       ///< the same for the median steps' CPU time
 };
 
 /// Min over repetitions of each run's mean ms/step, and the median step over all runs.
 double minMsPerStep(const Row& row);
 double medianMsPerStep(const Row& row);
+/// The median step's CPU time over all runs.
+double medianCpuMsPerStep(const Row& row);
 
 void printTableHeader(std::FILE* out);
 void printTableRow(std::FILE* out, const Row& row);
