@@ -19,6 +19,7 @@
 
 #include "stackbook/output/animated_gltf.hpp"
 #include "stackbook/output/animated_svg.hpp"
+#include "stackbook/output/contacts_csv.hpp"
 #include "stackbook/output/trajectory_csv.hpp"
 #include "stackbook/output/viewer_html.hpp"
 #include "stackbook/scene/scene.hpp"
@@ -38,6 +39,13 @@ const char* scenesDir() { return STACKBOOK_SCENES_DIR; }
 int reportError(const std::string& message, int code) {
   std::cerr << "stackbook: error: " << message << "\n";
   return code;
+}
+
+/// The loader's notes (what it repaired) and warnings (what is approximate), one line
+/// each on stderr, also with --quiet: they say the run is not exactly the scene's files.
+void printNotes(const Scene& scene) {
+  for (const std::string& note : scene.notes) std::cerr << "stackbook: note: " << note << "\n";
+  for (const std::string& warning : scene.warnings) std::cerr << "stackbook: warning: " << warning << "\n";
 }
 
 /// A scene argument: an existing file, else a bundled scene by name (with or without
@@ -100,15 +108,23 @@ std::vector<std::string> writeOutputs(const Scene& scene, const SceneRun& run, c
         const std::string energy = (out / "energy.csv").string();
         writeEnergyCsv(r.recording, energy);
         files.push_back(energy);
+        if (scene.output.contacts) {
+          const std::string contacts = (out / "contacts.csv").string();
+          writeContactsCsv(r.recording, contacts);
+          files.push_back(contacts);
+        }
         if constexpr (std::is_same_v<Result, RunResult<2>>) {
           const std::string svg = (out / "animation.svg").string();
-          writeAnimatedSvg(r.recording, svg);
+          SvgOptions svgOptions;
+          svgOptions.drawContacts = scene.output.drawContacts;
+          writeAnimatedSvg(r.recording, svg, svgOptions);
           files.push_back(svg);
         } else {
           // Up is against gravity (the last axis, z, in a scene without gravity).
           const Vec3 g = std::get<SceneBodies<3>>(scene.bodies).world.gravity;
           GlbOptions glb;
           glb.up = g.norm() > 0.0 ? Vec3(-g.normalized()) : Vec3::UnitZ();
+          glb.drawContacts = scene.output.drawContacts;
           const std::string glbPath = (out / "animation.glb").string();
           writeAnimatedGlb(r.recording, glbPath, glb);
           files.push_back(glbPath);
@@ -158,6 +174,7 @@ int runCommand(const RunArgs& args, bool demo) {
   } catch (const SceneError& e) {
     return reportError(e.what(), kBadInput);
   }
+  printNotes(scene);
   const fs::path out = args.out.empty() ? fs::path("stackbook-out") / fs::path(path).stem() : fs::path(args.out);
   try {
     ProgressBar bar(!args.quiet && isatty(fileno(stderr)) != 0, std::ceil(scene.duration / scene.settings.dt - 1e-9));
@@ -209,6 +226,7 @@ int checkCommand(const std::string& name, const std::vector<std::string>& sets) 
   try {
     const std::string path = resolveScene(name);
     const Scene scene = loadScene(path, sets);
+    printNotes(scene);
     std::cout << path << ": ok (" << scene.dimension << "D, " << scene.bodyCount() << " bodies, "
               << static_cast<long long>(std::ceil(scene.duration / scene.settings.dt - 1e-9)) << " steps of dt = "
               << scene.settings.dt << " s)\n";

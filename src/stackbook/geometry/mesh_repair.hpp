@@ -37,7 +37,8 @@ struct MeshRepairSettings {
   /// Weld vertices closer than weldTolerance x (bounding-box diagonal) (>= 0; 0 welds
   /// exact duplicates only).
   double weldTolerance = 1e-6;
-  /// A face whose area is at most degenerateTolerance x diagonal^2 is dropped.
+  /// A face whose area is at most degenerateTolerance x diagonal^2, or whose height
+  /// (2 area / longest edge) is at most weldTolerance x diagonal, is dropped.
   double degenerateTolerance = 1e-12;
 };
 // [mesh_repair_settings]
@@ -168,6 +169,9 @@ inline MeshRepairReport repairMesh(TriangleMesh& mesh, const MeshRepairSettings&
   }
   {
     const double minArea = settings.degenerateTolerance * diagonal * diagonal;
+    // A sliver thinner than the weld tolerance is degenerate at the welding scale: its
+    // height 2 A / (longest edge) is below what welding already treats as zero.
+    const double minHeight = settings.weldTolerance * diagonal;
     std::vector<std::array<int, 3>> kept;
     std::vector<int> dropped;
     std::map<std::array<int, 3>, int> seen;
@@ -175,8 +179,11 @@ inline MeshRepairReport repairMesh(TriangleMesh& mesh, const MeshRepairSettings&
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
       const std::array<int, 3>& t = mesh.faces[f];
       const Vec3& a = mesh.vertices[t[0]];
-      const double area = 0.5 * (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a).norm();
-      if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || !(area > minArea)) {
+      const Vec3& b = mesh.vertices[t[1]];
+      const Vec3& c = mesh.vertices[t[2]];
+      const double area = 0.5 * (b - a).cross(c - a).norm();
+      const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+      if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || !(area > minArea) || !(2.0 * area > minHeight * longest)) {
         dropped.push_back(static_cast<int>(f));
         continue;
       }
@@ -191,7 +198,7 @@ inline MeshRepairReport repairMesh(TriangleMesh& mesh, const MeshRepairSettings&
     mesh.faces = std::move(kept);
     if (!dropped.empty()) {
       report.repairs.push_back("dropped " + std::to_string(dropped.size()) +
-                               " degenerate faces (zero area or a repeated vertex; faces " +
+                               " degenerate faces (a repeated vertex, or thinner than the weld tolerance; faces " +
                                detail::faceList(dropped) + " of the file)");
     }
     if (!repeated.empty()) {

@@ -162,6 +162,13 @@ void writeAnimatedGlb(const Recording<3>& recording, const std::string& path, co
     model.meshes.push_back(mesh);
   }
 
+  // Keyframes: strictly increasing times (the later of equal times wins).
+  std::vector<std::size_t> keys;
+  for (std::size_t f = 0; f < times.size(); ++f) {
+    if (!keys.empty() && times[f] == times[keys.back()]) keys.back() = f;
+    else keys.push_back(f);
+  }
+
   // Nodes: a root that turns `up` onto +y, and one child per body at the first pose.
   tinygltf::Node root;
   root.name = "stackbook";
@@ -178,6 +185,61 @@ void writeAnimatedGlb(const Recording<3>& recording, const std::string& path, co
     model.nodes.push_back(node);
     root.children.push_back(static_cast<int>(i));
   }
+  // Contacts: one node per keyframe whose step applied impulses (drawn in world frame).
+  std::vector<std::pair<std::size_t, int>> contactNodes;  // (key index, node)
+  if (options.drawContacts && !recording.contacts().empty()) {
+    Aabb<3> box;
+    for (std::size_t i = 0; i < visuals.size(); ++i) {
+      for (const Vec3& v : visuals[i].mesh.vertices) box.extend(poses.front()[i].toWorld(v));
+    }
+    const double extent = box.isEmpty() ? 1.0 : std::max(box.extent().maxCoeff(), 1e-300);
+    const double length = options.contactNormalFraction * extent;
+    tinygltf::Material material;
+    material.name = "contacts";
+    material.pbrMetallicRoughness.baseColorFactor = {srgbToLinear(options.contactColor[0]),
+                                                     srgbToLinear(options.contactColor[1]),
+                                                     srgbToLinear(options.contactColor[2]), 1.0};
+    material.pbrMetallicRoughness.metallicFactor = 0.0;
+    material.emissiveFactor = material.pbrMetallicRoughness.baseColorFactor;
+    material.emissiveFactor.resize(3);
+    model.materials.push_back(material);
+    const int contactMaterial = static_cast<int>(model.materials.size()) - 1;
+    const auto& contacts = recording.contacts();
+    std::size_t next = 0;
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+      std::vector<float> points, lines;
+      for (; next < contacts.size() && contacts[next].frame <= keys[k]; ++next) {
+        const RecordedContact& c = contacts[next];
+        if (c.frame != keys[k] || c.time != times[keys[k]]) continue;
+        for (int d = 0; d < 3; ++d) points.push_back(static_cast<float>(c.contact.point[static_cast<std::size_t>(d)]));
+        for (int d = 0; d < 3; ++d) lines.push_back(static_cast<float>(c.contact.point[static_cast<std::size_t>(d)]));
+        for (int d = 0; d < 3; ++d) {
+          const auto u = static_cast<std::size_t>(d);
+          lines.push_back(static_cast<float>(c.contact.point[u] + length * c.contact.normal[u]));
+        }
+      }
+      if (points.empty()) continue;
+      tinygltf::Mesh mesh;
+      mesh.name = "contacts at " + output_detail::exactDecimal(times[keys[k]]) + " s";
+      for (const auto& [values, mode] : {std::pair{&points, TINYGLTF_MODE_POINTS}, std::pair{&lines, TINYGLTF_MODE_LINE}}) {
+        tinygltf::Primitive primitive;
+        primitive.attributes["POSITION"] =
+            addFloatAccessor(model, *values, TINYGLTF_TYPE_VEC3, 3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+        primitive.material = contactMaterial;
+        primitive.mode = mode;
+        mesh.primitives.push_back(primitive);
+      }
+      model.meshes.push_back(mesh);
+      tinygltf::Node node;
+      node.name = mesh.name;
+      node.mesh = static_cast<int>(model.meshes.size()) - 1;
+      if (keys.size() >= 2) node.scale = {0.0, 0.0, 0.0};  // hidden but at its own keyframe
+      model.nodes.push_back(node);
+      const int index = static_cast<int>(model.nodes.size()) - 1;
+      root.children.push_back(index);
+      contactNodes.emplace_back(k, index);
+    }
+  }
   model.nodes.push_back(root);
   tinygltf::Scene scene;
   scene.name = "stackbook";
@@ -185,12 +247,6 @@ void writeAnimatedGlb(const Recording<3>& recording, const std::string& path, co
   model.scenes.push_back(scene);
   model.defaultScene = 0;
 
-  // Keyframes: strictly increasing times (the later of equal times wins).
-  std::vector<std::size_t> keys;
-  for (std::size_t f = 0; f < times.size(); ++f) {
-    if (!keys.empty() && times[f] == times[keys.back()]) keys.back() = f;
-    else keys.push_back(f);
-  }
   tinygltf::Animation animation;
   animation.name = "stackbook run";
   int input = -1;
@@ -232,6 +288,28 @@ void writeAnimatedGlb(const Recording<3>& recording, const std::string& path, co
       channel.target_path = target;
       animation.channels.push_back(channel);
     }
+  }
+  for (const auto& [k, node] : contactNodes) {
+    if (keys.size() < 2) break;
+    if (input < 0) {
+      std::vector<float> t;
+      for (std::size_t f : keys) t.push_back(static_cast<float>(times[f]));
+      input = addFloatAccessor(model, t, TINYGLTF_TYPE_SCALAR, 1, 0, true);
+    }
+    std::vector<float> scale;
+    for (std::size_t j = 0; j < keys.size(); ++j) {
+      for (int d = 0; d < 3; ++d) scale.push_back(j == k ? 1.0f : 0.0f);
+    }
+    tinygltf::AnimationSampler sampler;
+    sampler.input = input;
+    sampler.output = addFloatAccessor(model, scale, TINYGLTF_TYPE_VEC3, 3, 0, false);
+    sampler.interpolation = "STEP";  // visible from its keyframe to the next
+    animation.samplers.push_back(sampler);
+    tinygltf::AnimationChannel channel;
+    channel.sampler = static_cast<int>(animation.samplers.size()) - 1;
+    channel.target_node = node;
+    channel.target_path = "scale";
+    animation.channels.push_back(channel);
   }
   if (!animation.channels.empty()) model.animations.push_back(animation);
   model.buffers[0].name = "stackbook data";

@@ -16,6 +16,14 @@ struct GlbOptions {
   /// along -z sets (0, 0, 1), and the writer puts every body under one root node that
   /// rotates this direction onto +y. The bodies' own nodes keep world coordinates.
   Vec3 up = Vec3::UnitY();
+  /// Draw, at each keyframe, the contacts of the step that reached it
+  /// (Recording::contacts()): points and normal lines in one node per keyframe, shown
+  /// from that keyframe to the next by a STEP scale channel (0 hides it).
+  bool drawContacts = false;
+  /// Length of a drawn normal as a fraction of the largest extent of the first frame.
+  double contactNormalFraction = 0.03;
+  /// sRGB colour of the contact points and normals.
+  std::array<double, 3> contactColor{0.84, 0.15, 0.16};
 };
 // [glb_options]
 

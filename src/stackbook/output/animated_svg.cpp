@@ -232,6 +232,44 @@ void writeAnimatedSvg(const Recording<2>& recording, const std::string& path,
            dur + "\" repeatCount=\"indefinite\" keyTimes=\"" + keyTimes + "\" values=\"" + rotate +
            "\"/>" + shape + "</g></g>\n";
   }
+  if (options.drawContacts) {
+    // The contacts of the step that reached each written frame, shown until the next one.
+    const double dot = 1.5 * options.strokeFraction * side;
+    const double normalLength = options.contactNormalFraction * side;
+    const auto& contacts = recording.contacts();
+    std::size_t next = 0;
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+      const std::size_t f = kept[k];
+      std::string marks;
+      for (; next < contacts.size() && contacts[next].frame <= f; ++next) {
+        const RecordedContact& c = contacts[next];
+        if (c.frame != f || c.time != times[f]) continue;  // an earlier step of the interval
+        const Vec2 p(c.contact.point[0], c.contact.point[1]);
+        const Vec2 q = p + normalLength * Vec2(c.contact.normal[0], c.contact.normal[1]);
+        marks += "<circle cx=\"" + num(p.x()) + "\" cy=\"" + num(p.y()) + "\" r=\"" + num(dot) + "\"/>";
+        marks += "<line x1=\"" + num(p.x()) + "\" y1=\"" + num(p.y()) + "\" x2=\"" + num(q.x()) +
+                 "\" y2=\"" + num(q.y()) + "\"/>";
+      }
+      if (marks.empty()) continue;
+      std::string visibility = "visible";
+      std::string animate;
+      if (animated) {
+        const auto u = [&](std::size_t j) {
+          return j == 0 ? 0.0 : j + 1 >= kept.size() ? 1.0 : (times[kept[j]] - t0) / span;
+        };
+        visibility = "hidden";
+        const std::string from = fixedDecimal(u(k), 6);
+        const bool last = k + 1 >= kept.size();
+        const std::string values = last ? "hidden;visible" : "hidden;visible;hidden";
+        const std::string keys = last ? "0;" + from : "0;" + from + ";" + fixedDecimal(u(k + 1), 6);
+        animate = "<animate attributeName=\"visibility\" calcMode=\"discrete\" dur=\"" + dur +
+                  "\" repeatCount=\"indefinite\" keyTimes=\"" + keys + "\" values=\"" + values + "\"/>";
+      }
+      svg += "<g class=\"contacts\" data-frame=\"" + std::to_string(f) + "\" visibility=\"" + visibility +
+             "\" fill=\"" + xmlEscape(options.contactColor) + "\" stroke=\"" +
+             xmlEscape(options.contactColor) + "\">" + animate + marks + "</g>\n";
+    }
+  }
   svg += "</g>\n";
 
   if (options.showTime && animated) {

@@ -28,6 +28,13 @@ struct SvgOptions {
   bool showTime = true;
   /// Background colour (any CSS colour).
   std::string background = "#ffffff";
+  /// Draw, at each written frame, the contacts of the step that reached it
+  /// (Recording::contacts()): a dot at each point and a line along its normal.
+  bool drawContacts = false;
+  /// Length of a drawn normal as a fraction of the bounding box's larger side.
+  double contactNormalFraction = 0.03;
+  /// Colour of the contact dots and normals (any CSS colour).
+  std::string contactColor = "#d62728";
 };
 // [svg_options]
 
@@ -39,7 +46,9 @@ struct SvgOptions {
 /// loop forever. Each body's outline is its BodyVisual mesh: the segments are chained into
 /// closed loops, all drawn as one path with fill-rule evenodd, so an annulus shows its
 /// hole. Rotation angles are unwrapped between frames so that linear interpolation turns
-/// the short way.
+/// the short way. With options.drawContacts, each written frame whose step applied
+/// impulses gets a group of dots (the points) and lines (the normals), visible from that
+/// frame to the next (SMIL discrete visibility).
 ///
 /// Throws std::invalid_argument if the recording has no frame or a visual's segments
 /// refer to missing vertices, std::runtime_error naming `path` if it cannot be written.

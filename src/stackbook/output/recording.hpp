@@ -15,6 +15,7 @@
 #include "stackbook/geometry/surface_mesh.hpp"
 #include "stackbook/body/integrate.hpp"
 #include "stackbook/math/pose.hpp"
+#include "stackbook/stepping/contact_recorder.hpp"
 #include "stackbook/stepping/world.hpp"
 
 namespace stackbook {
@@ -52,6 +53,17 @@ FrameEnergy frameEnergy(const World<D>& world) {
   return e;
 }
 // [frame_energy]
+// [recorded_contact]
+/// An impulse of the run (ContactRecord) with the step that applied it: `frame` is the
+/// recorded frame that step leads to (the first frame at or after it), `time` the end of
+/// the step. The impulses with frame f and time == times()[f] are those of the step that
+/// reached frame f: the contacts the outputs draw at that frame.
+struct RecordedContact {
+  std::size_t frame = 0;
+  double time = 0.0;
+  ContactRecord contact;
+};
+// [recorded_contact]
 
 // [recording]
 /// Frames of a run: times[f], poses[f][i] and the world-frame velocities v and omega of
@@ -103,6 +115,13 @@ class Recording {
     energies_.emplace_back();
   }
 
+  /// Append the impulses of the step that ended at time t; they belong to the next frame
+  /// to be recorded (frameCount()). Empty unless the run records contacts.
+  void recordContacts(double t, const std::vector<ContactRecord>& contacts) {
+    for (const ContactRecord& c : contacts) contacts_.push_back(RecordedContact{times_.size(), t, c});
+  }
+  const std::vector<RecordedContact>& contacts() const { return contacts_; }
+
   const std::vector<BodyVisual<D>>& visuals() const { return visuals_; }
   const std::vector<double>& times() const { return times_; }
   /// poses()[f][i]: body i at frame f.
@@ -123,6 +142,7 @@ class Recording {
   std::vector<std::vector<Vec<D>>> velocities_;
   std::vector<std::vector<AngVec<D>>> angularVelocities_;
   std::vector<FrameEnergy> energies_;
+  std::vector<RecordedContact> contacts_;
 };
 // [recording]
 

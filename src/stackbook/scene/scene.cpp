@@ -38,8 +38,10 @@ Scene parseScene(const json& doc, const std::string& file, const std::filesystem
   if (const json* v = member(doc, "solver")) scene_detail::readSolver(r, *v, scene.settings);
   if (const json* v = member(doc, "effects")) scene_detail::readEffects(r, *v, scene.settings.effects);
   if (const json* v = member(doc, "output")) {
-    r.requireObject(*v, "/output", {"frameRate"}, "the output settings");
+    r.requireObject(*v, "/output", {"frameRate", "contacts", "drawContacts"}, "the output settings");
     if (const json* f = member(*v, "frameRate")) scene.output.frameRate = r.positive(*f, "/output/frameRate");
+    if (const json* c = member(*v, "contacts")) scene.output.contacts = r.boolean(*c, "/output/contacts");
+    if (const json* c = member(*v, "drawContacts")) scene.output.drawContacts = r.boolean(*c, "/output/drawContacts");
   }
   std::map<std::string, Material> materials;
   if (const json* v = member(doc, "materials")) materials = scene_detail::readMaterials(r, *v);
@@ -56,6 +58,10 @@ Scene parseScene(const json& doc, const std::string& file, const std::filesystem
     const Vec3 g = gravity == nullptr ? Vec3(0.0, 0.0, -9.81) : r.vector<3>(*gravity, "/gravity");
     scene.bodies = scene_detail::buildBodies<3>(r, doc, materials, baseDir, g, scene.allowOverlap);
   }
+  std::visit([&scene](const auto& b) {
+    scene.notes = b.notes;
+    scene.warnings = b.warnings;
+  }, scene.bodies);
   return scene;
 }
 

@@ -46,6 +46,14 @@ struct SceneOutputSettings {
   /// Frames recorded per second of simulated time (> 0); the first frame is t = 0 and
   /// the last one the end of the run.
   double frameRate = 60.0;
+  /// Write contacts.csv: every impulse of the run, with its frame, step time, stage,
+  /// bodies, point, normal and impulse (writeContactsCsv()). Off: no contact is recorded.
+  bool contacts = false;
+  /// Draw the contact points and normals of the step that reaches each frame in the
+  /// animation (SVG in 2D, glTF in 3D).
+  bool drawContacts = false;
+  /// Whether the run records contacts at all (either output asks for them).
+  bool recordsContacts() const { return contacts || drawContacts; }
 };
 
 // [scene_bodies]
@@ -57,6 +65,9 @@ struct SceneBodies {
   World<D> world;
   std::vector<BodyVisual<D>> visuals;
   std::vector<std::string> pointers;
+  /// The loader's notes and warnings about these bodies (Scene::notes, Scene::warnings).
+  std::vector<std::string> notes;
+  std::vector<std::string> warnings;
 };
 // [scene_bodies]
 
@@ -71,6 +82,12 @@ struct Scene {
   SceneOutputSettings output;
   bool allowOverlap = false;  ///< start even if bodies interpenetrate
   std::variant<SceneBodies<2>, SceneBodies<3>> bodies;
+  /// What the loader changed, one line each, "FILE: POINTER: what" (the repairs of a mesh
+  /// loaded with "meshMode": "repair"); the program prints them on stderr.
+  std::vector<std::string> notes;
+  /// What is approximate because of it, one line each in the same form (a mesh that is
+  /// still open, non-manifold or self-intersecting after repair).
+  std::vector<std::string> warnings;
 
   /// Number of bodies.
   int bodyCount() const;

@@ -169,6 +169,11 @@ void addBodies(const Reader& r, const json& body, const std::string& ptr,
     } catch (const std::exception& e) {
       r.fail(ptr + "/shape", e.what());  // the geometry code's own check, e.g. a too-thin bone
     }
+    // What a repaired mesh changed, and what stays approximate, once per distinct shape.
+    for (const std::string& line : built.repairs) out.notes.push_back(r.file() + ": " + ptr + "/shape/file: " + line);
+    for (const std::string& line : built.approximations) {
+      out.warnings.push_back(r.file() + ": " + ptr + "/shape/file: approximate: " + line);
+    }
     it = shapes.emplace(key, std::move(built)).first;
   }
   const BuiltShape<D>& shape = it->second;

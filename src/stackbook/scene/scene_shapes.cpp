@@ -9,7 +9,10 @@
 #include "stackbook/geometry/analytic_sdf.hpp"
 #include "stackbook/geometry/mass_properties.hpp"
 #include "stackbook/geometry/mesh_nonconvex.hpp"
+#include "stackbook/geometry/mesh_file.hpp"
+#include "stackbook/geometry/mesh_repair.hpp"
 #include "stackbook/geometry/obj_loader.hpp"
+#include "stackbook/geometry/winding_mass_properties.hpp"
 #include "stackbook/geometry/sdf_grid.hpp"
 
 namespace stackbook::scene_detail {
@@ -69,6 +72,31 @@ BuiltShape<D> meshShape(SurfaceMesh<D> mesh, const std::string& name, int resolu
 }
 // [mesh_shape]
 
+// [approximate_mesh_shape]
+/// A shape from a mesh that is not watertight after repair (chapter 6, "Repairing
+/// downloaded meshes"): the solid is {w > 1/2}. Its mass properties are integrated over
+/// the cells of a grid with `resolution` cells across (Eq. (6.23)), and its signed-distance
+/// grid signs every node by its own winding number, since the region shortcut of Eq.
+/// (6.10) needs a closed surface.
+BuiltShape<3> approximateMeshShape(TriangleMesh mesh, const std::string& name, int resolution) {
+  const MassProperties<3> properties = windingNumberMassProperties(mesh, 1.0, resolution);
+  const PrincipalAxes<3> axes = principalAxes<3>(properties);
+  const Pose<3> frame{properties.centerOfMass, axes.rotation};
+  for (Vec3& v : mesh.vertices) v = frame.toBody(v);
+  SdfGridSettings grid;
+  grid.cellsAcrossLargestExtent = resolution;
+  grid.validate = false;
+  grid.sign = SdfSignMethod::WindingNumberPerNode;
+  BuiltShape<3> out;
+  out.measure = properties.mass;
+  out.unitMoments = axes.moments;
+  out.frame = frame;
+  out.shape = std::make_shared<GridShape<3>>(mesh, name, grid);
+  out.mesh = std::move(mesh);
+  return out;
+}
+// [approximate_mesh_shape]
+
 }  // namespace
 
 template <int D>
@@ -104,7 +132,7 @@ BuiltShape<D> buildShape(const Reader& r, const json& spec, const std::string& p
       {"cup", {"type", "outerRadius", "height", "wallThickness", "bottomThickness", "sdfResolution"}},
       {"bone", {"type", "ballRadius", "neckRadius", "length", "sdfResolution"}},
       {"star", {"type", "outerRadius", "innerRadius", "points", "sdfResolution"}},
-      {"mesh", {"type", "file", "scale", "sdfResolution"}},
+      {"mesh", {"type", "file", "scale", "sdfResolution", "meshMode", "weldTolerance"}},
   };
   r.requireObject(spec, ptr, keys.at(type), "a " + type + " shape");
   const auto need = [&](const char* key) -> const json& {
@@ -245,15 +273,60 @@ BuiltShape<D> buildShape(const Reader& r, const json& spec, const std::string& p
       if (!std::filesystem::is_regular_file(path, ec)) {
         r.fail(ptr + "/file", "no such mesh file: " + path.string());
       }
+      // [scene_mesh_mode]
+      // "meshMode": strict (the default) takes the file as it is or rejects it; repair
+      // loads it raw, repairs what it can and keeps the rest for the winding number.
+      MeshMode mode = MeshMode::Strict;
+      if (const json* m = member(spec, "meshMode")) {
+        const std::string text = r.string(*m, ptr + "/meshMode");
+        if (text == "repair") {
+          mode = MeshMode::Repair;
+        } else if (text != "strict") {
+          r.fail(ptr + "/meshMode", "must be \"strict\" or \"repair\", got \"" + text + "\"");
+        }
+      }
+      MeshRepairSettings repair;
+      if (const json* w = member(spec, "weldTolerance")) {
+        if (mode != MeshMode::Repair) r.fail(ptr + "/weldTolerance", "applies only with \"meshMode\": \"repair\"");
+        repair.weldTolerance = r.number(*w, ptr + "/weldTolerance");
+        if (!(repair.weldTolerance >= 0.0 && repair.weldTolerance < 0.01)) {
+          r.fail(ptr + "/weldTolerance", "must be in [0, 0.01) (a fraction of the mesh's diagonal), got " +
+                                             formatNumber(repair.weldTolerance));
+        }
+      }
+      ObjLoadSettings load;
+      if (mode == MeshMode::Repair) {
+        load.mergeTolerance = -1.0;  // repairMesh welds, and says so
+        load.dropUnusedVertices = false;
+        load.validate = false;
+      }
       TriangleMesh mesh;
       try {
-        mesh = loadObjMesh(path.string());
+        mesh = loadMeshFile(path.string(), load);
       } catch (const std::exception& e) {
         r.fail(ptr + "/file", std::string("the mesh cannot be used: ") + e.what());
       }
       const double scale = optionalPositive("scale", 1.0);
       for (Vec3& v : mesh.vertices) v *= scale;
-      return meshShape<3>(std::move(mesh), name, resolution());
+      if (mode == MeshMode::Strict) return meshShape<3>(std::move(mesh), name, resolution());
+      const MeshRepairReport report = repairMesh(mesh, repair);
+      if (mesh.faces.empty()) r.fail(ptr + "/file", "the mesh cannot be used: no face is left after repair");
+      BuiltShape<3> out;
+      try {
+        out = report.watertight() ? meshShape<3>(std::move(mesh), name, resolution())
+                                  : approximateMeshShape(std::move(mesh), name, resolution());
+      } catch (const std::exception& e) {
+        r.fail(ptr + "/file", std::string("the repaired mesh cannot be used: ") + e.what());
+      }
+      out.repairs = report.repairs;
+      out.approximations = report.remaining;
+      if (!report.watertight()) {
+        out.approximations.push_back(
+            "mass, centre of mass and inertia integrated over the cells with winding number > 1/2 "
+            "(about one cell of error); the distance is to the faces that exist");
+      }
+      return out;
+      // [scene_mesh_mode]
     }
   }
   r.fail(ptr + "/type", "shape type \"" + type + "\" is not available in " + std::to_string(D) + "D");

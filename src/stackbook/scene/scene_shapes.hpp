@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "stackbook/scene/scene_reader.hpp"
 
@@ -20,6 +21,10 @@ struct BuiltShape {
   double measure = 0.0;    ///< area (2D) or volume (3D)
   AngVec<D> unitMoments;   ///< principal moments of inertia at density 1
   Pose<D> frame;
+  /// One line per repair of a mesh loaded with "meshMode": "repair" (mesh_repair.hpp).
+  std::vector<std::string> repairs;
+  /// One line per defect left after repair, with what is approximate because of it.
+  std::vector<std::string> approximations;
 };
 
 /// Builds the shape of `spec` (at pointer `ptr`); `baseDir` resolves mesh files.

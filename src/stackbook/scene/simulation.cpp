@@ -67,7 +67,10 @@ template <int D>
 RunResult<D> runBodies(const Scene& scene, const SceneBodies<D>& bodies, const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   World<D> world = bodies.world;
-  const StepSettings& settings = scene.settings;
+  // The contacts output (chapter 10): the step records its impulses only when asked.
+  ContactRecorder recorder;
+  StepSettings settings = scene.settings;
+  if (scene.output.recordsContacts()) settings.contactRecorder = &recorder;
   const double duration = options.duration > 0.0 ? options.duration : scene.duration;
   // The number of steps that covers the duration (a last partial step is taken whole).
   const auto steps = static_cast<std::int64_t>(std::ceil(duration / settings.dt - 1e-9));
@@ -89,6 +92,10 @@ RunResult<D> runBodies(const Scene& scene, const SceneBodies<D>& bodies, const R
   for (std::int64_t n = 1; n <= steps; ++n) {
     result.counters += step<D>(world, settings, hook);
     const double t = static_cast<double>(n) * settings.dt;
+    if (settings.contactRecorder != nullptr) {
+      result.recording.recordContacts(t, recorder.records());
+      recorder.clear();
+    }
     // Frames at multiples of 1/frameRate (the step that reaches each one, counted in whole
     // steps), and the end: Eq. (10.3).
     if (n >= frameStep(frame, scene.output.frameRate, settings.dt) || n == steps) {
@@ -157,6 +164,7 @@ json runSummaryJson(const Scene& scene, const SceneRun& run) {
             {"simulatedSeconds", r.simulatedSeconds},
             {"steps", c.steps},
             {"frames", r.recording.frameCount()},
+            {"contacts", r.recording.contacts().size()},
             {"effects", effectList(c.effects)},
             {"wallSeconds", r.wallSeconds},
             {"secondsPerStep", perStep},
