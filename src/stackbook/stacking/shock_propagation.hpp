@@ -219,6 +219,9 @@ void shockPropagationPass(World<D>& world, const ContactGraph& graph, const Cont
   spec.friction = effects.friction;
   spec.rollingFriction = effects.rollingFriction;
   spec.ledger = ledger;  // the step's ledger under FrictionConeRule::StepTotal (Eq. (8.13))
+  spec.pairImpulseTolerance = shock.pairImpulseTolerance;
+  double largest = 0.0;  // a level sweep's fastest approach (levelApproachTolerance)
+  if (shock.levelApproachTolerance > 0.0) spec.largestApproach = &largest;
   spec.recorder = settings.contactRecorder;  // chapter 10's contacts output; nullptr: off
   spec.stage = ContactStage::Shock;
   std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, settings.dt, settings.rotation);
@@ -237,7 +240,9 @@ void shockPropagationPass(World<D>& world, const ContactGraph& graph, const Cont
     // A sweep that applies no impulse ends the level: nothing approaches, and no later
     // sweep can find an approach, since restitution only scales an impulse (Eq. (8.5)).
     for (int s = 1; s <= shock.sweepsPerLevel && !pairs.empty(); ++s) {
+      largest = 0.0;
       if (sweepPairs<D>(world, views, pairs, spec, s, settings.dt, settings, counters) == 0) break;
+      if (shock.levelApproachTolerance > 0.0 && largest <= shock.levelApproachTolerance) break;
     }
     for (const int body : levels.bodies(l)) frozen.freeze(body);  // Eq. (9.4)
   }

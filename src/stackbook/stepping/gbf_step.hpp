@@ -105,6 +105,8 @@ inline StageSpec collisionStageSpec(const StepSettings& s, const Effects& effect
   spec.rollingFriction = effects.rollingFriction;
   spec.recorder = s.contactRecorder;
   spec.stage = ContactStage::Collision;
+  spec.pairImpulseTolerance = s.pairImpulseTolerance;
+  spec.stageApproachTolerance = s.stageApproachTolerance;
   return spec;
 }
 
@@ -117,6 +119,8 @@ inline StageSpec contactStageSpec(const StepSettings& s, const Effects& effects,
   spec.rollingFriction = effects.rollingFriction;
   spec.recorder = s.contactRecorder;
   spec.stage = ContactStage::Contact;
+  spec.pairImpulseTolerance = s.pairImpulseTolerance;
+  spec.stageApproachTolerance = s.stageApproachTolerance;
   return spec;
 }
 // [stage_specs]

@@ -6,6 +6,7 @@
 /// GBF's collision stage and contact stage are both this loop, with different poses and
 /// restitution; the traditional order runs it at the current poses.
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <functional>
@@ -79,6 +80,15 @@ struct StageSpec {
   /// nullptr (the default): nothing is recorded.
   ContactRecorder* recorder = nullptr;
   ContactStage stage = ContactStage::Contact;
+  /// End a pair's loop after an impulse of magnitude at most this fraction of the visit's
+  /// first one (>= 0; 0: only separation or the cap end it, GBF). Chapter 8, "Ending the loops".
+  double pairImpulseTolerance = 0.0;
+  /// runImpulseStage() and the shock pass: a sweep whose largest approach speed
+  /// -u_rel . N at the samples it acted on was at most this (m/s, >= 0) ends the stage or
+  /// level (0: only a sweep without impulses does, GBF).
+  double stageApproachTolerance = 0.0;
+  /// When set, resolvePair() raises it to the largest approach speed it acted on.
+  double* largestApproach = nullptr;
 };
 // [stage_spec]
 
@@ -105,6 +115,7 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
   // The candidates of the lazy deepest-sample search, kept across calls (one buffer per
   // thread), so that a pair query allocates nothing once the buffer has grown.
   thread_local std::vector<InterferenceCandidate<D>> scratch;
+  double firstImpulse = 0.0;  // |j| of the visit's first impulse (pairImpulseTolerance)
   for (int iteration = 0; iteration < spec.pairIterations; ++iteration) {
     // GBF's rule needs normals only until the deepest approaching sample is found: the
     // lazy search picks the same sample with the same bits (chapter 7). The centre rule
@@ -122,6 +133,9 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
     const Vec<D> rOther = s.point - views[static_cast<std::size_t>(s.other)].pose.position;
     const Mat<D> K = pairCollisionMatrix<D>(owner, rOwner, other, rOther);  // Eq. (1.10)
     const Vec<D> u = relativeVelocity<D>(owner, rOwner, other, rOther);     // Eq. (8.3)
+    if (spec.largestApproach != nullptr) {
+      *spec.largestApproach = std::max(*spec.largestApproach, -u.dot(s.normal));
+    }
     const PairMaterial material = world.pairMaterial(s.owner, s.other);     // Eq. (8.4)
     const double e = spec.restitution(sweep, material);
     ContactImpulse<D> impulse;
@@ -174,6 +188,19 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
         testedPose<D>(world, s.owner, spec.lookahead, dt, settings.rotation);
     views[static_cast<std::size_t>(s.other)].pose =
         testedPose<D>(world, s.other, spec.lookahead, dt, settings.rotation);
+    // [pair_converged]
+    // The loop has converged when an impulse is a small fraction of the visit's first one
+    // (chapter 8, "Ending the loops"); off (0), GBF's loop runs to separation or the cap.
+    if (spec.pairImpulseTolerance > 0.0) {
+      const double magnitude = impulse.j.norm();
+      if (iteration == 0) {
+        firstImpulse = magnitude;
+      } else if (magnitude <= spec.pairImpulseTolerance * firstImpulse) {
+        ++counters.pairConvergences;
+        return applied;
+      }
+    }
+    // [pair_converged]
   }
   ++counters.pairIterationCapHits;
   return applied;
@@ -224,10 +251,17 @@ void runImpulseStage(World<D>& world, const StageSpec& spec, double dt,
                      const StepSettings& settings, StageCounters& counters) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<CollisionBody<D>> views = stageViews<D>(world, spec.lookahead, dt, settings.rotation);
+  // The residual test (chapter 8, "Ending the loops"): with a tolerance, a sweep whose
+  // fastest approach was at most stageApproachTolerance ends the stage too.
+  StageSpec measured = spec;
+  double largest = 0.0;
+  if (spec.stageApproachTolerance > 0.0) measured.largestApproach = &largest;
   for (int sweep = 1; sweep <= spec.sweeps; ++sweep) {
     const std::vector<BodyPair> pairs =
         sweepAndPrune<D>(views, settings.detection.broad, &counters.detection);
-    if (sweepPairs<D>(world, views, pairs, spec, sweep, dt, settings, counters) == 0) break;
+    largest = 0.0;
+    if (sweepPairs<D>(world, views, pairs, measured, sweep, dt, settings, counters) == 0) break;
+    if (spec.stageApproachTolerance > 0.0 && largest <= spec.stageApproachTolerance) break;
   }
   counters.seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -26,6 +26,7 @@ struct StageCounters {
   std::int64_t sticking = 0;         ///< of those: static friction
   std::int64_t sliding = 0;          ///< of those: kinetic friction
   std::int64_t pairIterationCapHits = 0;  ///< pair loops stopped by the cap, not by separation
+  std::int64_t pairConvergences = 0;      ///< pair loops ended by the impulse tolerance
   std::int64_t frictionEvaluations = 0;   ///< calls of the frictional impulse (friction effect on)
   std::int64_t elasticImpulses = 0;       ///< impulses applied with e > 0 (restitution effect on)
   std::int64_t rollingImpulses = 0;       ///< rolling/spinning friction impulses applied
@@ -49,6 +50,7 @@ struct StageCounters {
     sticking += o.sticking;
     sliding += o.sliding;
     pairIterationCapHits += o.pairIterationCapHits;
+    pairConvergences += o.pairConvergences;
     frictionEvaluations += o.frictionEvaluations;
     elasticImpulses += o.elasticImpulses;
     rollingImpulses += o.rollingImpulses;

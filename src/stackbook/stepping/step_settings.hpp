@@ -65,6 +65,12 @@ struct ShockSettings {
   /// every level. Off (GBF): the contact stage runs and the pass follows it. Pair it with
   /// more sweeps per level (20 converge a 20-row pyramid). The traditional order ignores it.
   bool replacesContactStage = false;
+  /// The pass's pair loops end after an impulse |j| <= this times the visit's first one
+  /// (>= 0, < 1; 0: PhysBAM's loop to separation or the cap). See StepSettings.
+  double pairImpulseTolerance = 0.0;
+  /// A level sweep whose largest approach speed is at most this (m/s) ends the level (0: only
+  /// a sweep with no impulse does).
+  double levelApproachTolerance = 0.0;
 
   /// The restitution of level sweep l (1-based).
   double restitutionAt(int l) const {
@@ -115,6 +121,15 @@ struct StepSettings {
   EffectOverrides effects;
   /// Shock propagation (chapter 9); used only when that effect runs.
   ShockSettings shock;
+  // [loop_tolerances]
+  /// Collision and contact stages: a pair's loop ends after an impulse |j| <= this times
+  /// the first impulse of that pair visit (>= 0, < 1; 0, GBF: separation or the cap end it).
+  double pairImpulseTolerance = 0.0;
+  /// Collision and contact stages: a sweep whose largest approach speed -u_rel . N (at the
+  /// samples it acted on) is at most this, in m/s, ends the stage (>= 0; 0, GBF: only a
+  /// sweep with no impulse does).
+  double stageApproachTolerance = 0.0;
+  // [loop_tolerances]
   /// Not a physics setting: where the stages record every impulse they apply (chapter 10's
   /// contacts output). nullptr (the default): nothing is recorded; the trajectory is the
   /// same either way, bit for bit.
@@ -145,6 +160,14 @@ inline void validateStepSettings(const StepSettings& s, const char* caller = "va
              s.contactRestitution.size() != static_cast<std::size_t>(s.contactIterations)) {
     msg << "contactRestitution must be empty (GBF ramp) or hold contactIterations = "
         << s.contactIterations << " values, got " << s.contactRestitution.size();
+  } else if (!(s.pairImpulseTolerance >= 0.0 && s.pairImpulseTolerance < 1.0)) {
+    msg << "pairImpulseTolerance must be in [0, 1), got " << s.pairImpulseTolerance;
+  } else if (!(std::isfinite(s.stageApproachTolerance) && s.stageApproachTolerance >= 0.0)) {
+    msg << "stageApproachTolerance must be finite and >= 0, got " << s.stageApproachTolerance;
+  } else if (!(s.shock.pairImpulseTolerance >= 0.0 && s.shock.pairImpulseTolerance < 1.0)) {
+    msg << "shock.pairImpulseTolerance must be in [0, 1), got " << s.shock.pairImpulseTolerance;
+  } else if (!(std::isfinite(s.shock.levelApproachTolerance) && s.shock.levelApproachTolerance >= 0.0)) {
+    msg << "shock.levelApproachTolerance must be finite and >= 0, got " << s.shock.levelApproachTolerance;
   } else if (s.shock.passes < 1) {
     msg << "shock.passes must be >= 1, got " << s.shock.passes;
   } else if (s.shock.sweepsPerLevel < 1) {
