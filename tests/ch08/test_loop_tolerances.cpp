@@ -10,6 +10,7 @@
 
 #include "scenes.hpp"
 #include "support/dimensions.hpp"
+#include "support/mechanical_energy.hpp"
 
 using namespace stackbook;
 using namespace stackbook::testing;
@@ -21,16 +22,6 @@ StepSettings withTolerances() {
   s.pairImpulseTolerance = 0.05;
   s.stageApproachTolerance = 1e-4;
   return s;
-}
-
-template <int D>
-double mechanicalEnergy(const World<D>& world) {
-  double e = 0.0;
-  for (const RigidBody<D>& b : world.bodies) {
-    if (b.isStatic()) continue;
-    e += b.kineticEnergy() - b.mass() * world.gravity.dot(b.position);
-  }
-  return e;
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include "scenes.hpp"
 #include "support/dimensions.hpp"
+#include "support/mechanical_energy.hpp"
 
 using namespace stackbook;
 using namespace stackbook::testing;
@@ -18,17 +19,6 @@ StepSettings stepCone(double dt = 1e-3) {
   s.dt = dt;
   s.frictionCone = FrictionConeRule::StepTotal;
   return s;
-}
-
-/// Kinetic plus potential energy of the world's dynamic bodies (gravity along -up).
-template <int D>
-double mechanicalEnergy(const World<D>& world) {
-  double e = 0.0;
-  for (const RigidBody<D>& b : world.bodies) {
-    if (b.inverseMass == 0.0) continue;
-    e += b.kineticEnergy() - b.mass() * world.gravity.dot(b.position);
-  }
-  return e;
 }
 
 }  // namespace

@@ -42,7 +42,7 @@ World<D> droppedBoxes(int count) {
   const Material material{0.3, 0.5, 0.0};
   World<D> world = groundWorld<D>(material);
   for (int k = 0; k < count; ++k) {
-    Vec<D> centre = (0.52 + 1.0 * k) * up<D>();
+    Vec<D> centre = (0.52 + 1.0 * k) * stacks::up<D>();
     const int b = addBox<D>(world, Vec<D>::Constant(1.0), 1.0, centre, material);
     RigidBody<D>& body = world.bodies[static_cast<std::size_t>(b)];
     body.velocity[0] = 0.4;
@@ -84,7 +84,7 @@ TEST_CASE_TEMPLATE("Recorded impulses account for a dropped box's momentum chang
   const Vec<D> expected = end.mass() * (end.velocity - start.velocity) - end.mass() * T * world.gravity;
   const Vec<D> recorded = impulseOn<D>(recorder, 1, false);
   // Invariant tier: the two sides add the same doubles in a different order.
-  CHECK((recorded - expected).norm() < 1e-12 * (1.0 + end.mass() * kG * T) * steps);
+  CHECK((recorded - expected).norm() < 1e-12 * (1.0 + end.mass() * stacks::kG * T) * steps);
 }
 
 TEST_CASE_TEMPLATE("Recorded impulses of a two-box stack: all three stages, the top box's momentum", Dim,
@@ -109,12 +109,12 @@ TEST_CASE_TEMPLATE("Recorded impulses of a two-box stack: all three stages, the 
   const RigidBody<D>& end = world.bodies[2];
   const double T = steps * settings.dt;
   const Vec<D> expected = end.mass() * (end.velocity - start.velocity) - end.mass() * T * world.gravity;
-  CHECK((impulseOn<D>(recorder, 2, false) - expected).norm() < 1e-12 * (1.0 + kG * T) * steps);
+  CHECK((impulseOn<D>(recorder, 2, false) - expected).norm() < 1e-12 * (1.0 + stacks::kG * T) * steps);
   // The lower box (body 1) is frozen during the top pair's shock sweeps.
   const RigidBody<D>& lowerEnd = world.bodies[1];
   const Vec<D> lower =
       lowerEnd.mass() * (lowerEnd.velocity - lowerStart.velocity) - lowerEnd.mass() * T * world.gravity;
-  CHECK((impulseOn<D>(recorder, 1, true) - lower).norm() < 1e-12 * (1.0 + kG * T) * steps);
+  CHECK((impulseOn<D>(recorder, 1, true) - lower).norm() < 1e-12 * (1.0 + stacks::kG * T) * steps);
 }
 
 TEST_CASE_TEMPLATE("A contact recorder changes no bit of the trajectory", Dim, testing::In2D, testing::In3D) {

@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
+fs::path sweepScratch(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("stackbook_ch11_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -44,7 +44,7 @@ const char* kFallSpec = R"({"name": "fall", "scene": "fall.json",
              {"name": "speed", "quantity": "velocity", "body": 0, "axis": 2, "expected": -1.0}]})";
 
 std::string specError(const std::string& text) {
-  const fs::path dir = scratch("spec_error");
+  const fs::path dir = sweepScratch("spec_error");
   write(dir / "fall.json", kFallScene);
   write(dir / "bad.json", text);
   try {
@@ -94,7 +94,7 @@ TEST_CASE("sweep spec errors are one line naming the file and the field and what
 
 // [test_sweep_rows]
 TEST_CASE("a tiny sweep writes one row per run and resumes without rerunning and and is deterministic") {
-  const fs::path dir = scratch("sweep_rows");
+  const fs::path dir = sweepScratch("sweep_rows");
   write(dir / "fall.json", kFallScene);
   write(dir / "fall_sweep.json", kFallSpec);
   const SweepSpec spec = loadSweepSpec((dir / "fall_sweep.json").string());
@@ -146,7 +146,7 @@ TEST_CASE("a tiny sweep writes one row per run and resumes without rerunning and
 // [test_sweep_rows]
 
 TEST_CASE("the time step's error is first order: halving dt halves the height error") {
-  const fs::path dir = scratch("sweep_order");
+  const fs::path dir = sweepScratch("sweep_order");
   write(dir / "fall.json", kFallScene);
   write(dir / "fall_sweep.json", kFallSpec);
   const SweepSpec spec = loadSweepSpec((dir / "fall_sweep.json").string());
@@ -184,7 +184,7 @@ TEST_CASE("stackbook sweep --list prints one independent command line per run an
           "is one line on stderr with exit code 2") {
   const fs::path program = programPath();
   REQUIRE_MESSAGE(!program.empty(), "the stackbook program is not built");
-  const fs::path dir = scratch("sweep_list");
+  const fs::path dir = sweepScratch("sweep_list");
   write(dir / "fall.json", kFallScene);
   write(dir / "fall_sweep.json", kFallSpec);
   const std::string out = (dir / "list.txt").string(), err = (dir / "err.txt").string();
