@@ -24,6 +24,15 @@ endif()
 stackbook_require_package(tinyobjloader libtinyobjloader-dev)
 # STL and PLY meshes (chapter 6): assimp reads them, stackbook checks and repairs them.
 stackbook_require_package(assimp libassimp-dev)
+# Debian's assimp target lists libdraco among its link libraries, and libdraco exports its own
+# build of tinygltf's functions: named on a link line before libtinygltf, they take the calls
+# of the glTF output (chapter 10) and fail ("FS callback not set"). libassimp.so names libdraco
+# itself, so leaving it off the link line still loads it, after libtinygltf.
+get_target_property(_stackbook_assimp_links assimp::assimp INTERFACE_LINK_LIBRARIES)
+if(_stackbook_assimp_links)
+  list(REMOVE_ITEM _stackbook_assimp_links draco::draco)
+  set_target_properties(assimp::assimp PROPERTIES INTERFACE_LINK_LIBRARIES "${_stackbook_assimp_links}")
+endif()
 # The simulator (chapter 10): scene files in JSON, the command line, glTF output.
 stackbook_require_package(nlohmann_json nlohmann-json3-dev 3.10)
 stackbook_require_package(CLI11 libcli11-dev)

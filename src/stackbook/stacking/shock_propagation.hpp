@@ -74,8 +74,14 @@ ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings
       views[k] = collisionBodyAt<D>(advanced[k], *world.shapes[k],
                                     predictPose<D>(advanced[k], settings.dt, settings.rotation));  // x_p + dt (v_p + dt a_p)
       // Whether any sample approaches: the lazy search of chapter 7 answers it with the
-      // normals of the samples it tests only.
-      if (deepestApproachingInPair<D>(views, pair, settings.narrow, counters, scratch)) {
+      // normals of the samples it tests only; chapter 11's exact deepest points need the
+      // full query.
+      const bool approaching =
+          settings.narrow.surfaceQuery == SurfaceQuery::Samples
+              ? deepestApproachingInPair<D>(views, pair, settings.narrow, counters, scratch).has_value()
+              : deepestApproachingSample<D>(pairInterference<D>(views, pair, settings.narrow, counters), views)
+                    .has_value();
+      if (approaching) {
         edges.push_back(ContactPair{q, p});
       }
       views[k] = old;

@@ -119,9 +119,11 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
   for (int iteration = 0; iteration < spec.pairIterations; ++iteration) {
     // GBF's rule needs normals only until the deepest approaching sample is found: the
     // lazy search picks the same sample with the same bits (chapter 7). The centre rule
-    // needs every sample's normal.
+    // needs every sample's normal, and the exact deepest points of chapter 11 are found
+    // by pairInterference() alone.
     const std::optional<InterferenceSample<D>> point =
-        settings.impulsePoint.rule == ImpulsePointRule::Deepest
+        settings.impulsePoint.rule == ImpulsePointRule::Deepest &&
+                settings.detection.narrow.surfaceQuery == SurfaceQuery::Samples
             ? deepestApproachingInPair<D>(views, pair, settings.detection.narrow, &counters.detection, scratch)
             : impulsePoint<D>(pairInterference<D>(views, pair, settings.detection.narrow, &counters.detection),
                               views, settings.impulsePoint);  // Eqs. (7.6), (8.10)
