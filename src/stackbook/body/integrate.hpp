@@ -52,8 +52,13 @@ template <int D>
 Orientation<D> normalizedOrientation(const Orientation<D>& q) {
   if constexpr (D == 2) {
     // In the plane the angle is the whole orientation; wrapping keeps it small, so that
-    // its rounding error stays at the 1e-16 level however long the body spins.
-    return Eigen::Rotation2Dd(std::remainder(q.angle(), 2.0 * M_PI));
+    // its rounding error stays at the 1e-16 level however long the body spins. An angle
+    // already in [-pi, pi] is its own remainder (the nearest multiple of 2 pi is 0, and
+    // 2.0 * M_PI / 2 is M_PI exactly), so the call is skipped there: same bits, and most
+    // calls (every predicted pose of a resting body) take the shortcut.
+    const double angle = q.angle();
+    if (std::abs(angle) <= M_PI) return Eigen::Rotation2Dd(angle);
+    return Eigen::Rotation2Dd(std::remainder(angle, 2.0 * M_PI));
   } else {
     const double norm = q.norm();
     if (!std::isfinite(norm) || !(norm > 0.0)) {
