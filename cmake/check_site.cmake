@@ -134,10 +134,11 @@ list(SORT chapter_pages)
 if(NOT chapter_pages)
   problem("no chapter pages (chNN.html) in ${SITE}")
 endif()
-# The chapters' appendix pages (ch09_appendix_pass.html, ch09_all_tests.html) have the
-# same navigation and the same rule for case codes; figures are asked of chapters only.
+# The chapters' appendix pages (ch09_appendix_pass.html, ch09_all_tests.html,
+# ch08_reference.html) have the same navigation and the same rule for case codes; figures
+# are asked of chapters only.
 file(GLOB appendix_pages RELATIVE "${SITE}" "${SITE}/ch[0-9][0-9]_appendix*.html"
-     "${SITE}/ch[0-9][0-9]_all_tests.html")
+     "${SITE}/ch[0-9][0-9]_all_tests.html" "${SITE}/ch[0-9][0-9]_reference.html")
 foreach(page IN LISTS chapter_pages appendix_pages)
   file(READ "${SITE}/${page}" html)
   string(REGEX MATCHALL "class=\"chapter_nav\"" navs "${html}")
@@ -152,11 +153,12 @@ foreach(page IN LISTS chapter_pages appendix_pages)
   if(REQUIRE_FIGURES AND NOT is_chapter EQUAL -1 AND figure_count LESS 2)
     problem("${page}: at least two SVG figures expected, found ${figure_count}")
   endif()
-  # Prose only: drop listings, code spans, links, formulas and tags, then look for codes.
+  # Prose and code spans: drop listings, links, formulas and tags, then look for codes.
+  # Code spans stay in: a test name such as "A6 masses 1 and 3 ..." carries its case code
+  # as a link inside the span (<code>\ref case_A6 "A6" masses ...</code> in the source).
   set(text "${html}")
   strip_fragments("${text}" text)
   string(REGEX REPLACE "<pre[^>]*>[^<]*</pre>" " " text "${text}")
-  string(REGEX REPLACE "<code>[^<]*</code>" " " text "${text}")
   string(REGEX REPLACE "<a [^>]*>[^<]*</a>" " " text "${text}")
   string(REGEX REPLACE "\\\\\\([^\\\\]*\\\\\\)" " " text "${text}")
   string(REGEX REPLACE "<[^>]*>" " " text "${text}")

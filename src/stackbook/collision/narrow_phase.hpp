@@ -175,7 +175,7 @@ void appendSamplesInside(const CollisionBody<D>& owner, int ownerIndex,
     throw std::invalid_argument(msg.str());
   }
   detail::checkPose<D>(owner.pose, ownerIndex, "appendSamplesInside");
-  detail::checkPose<D>(penetrated.pose, penetratedIndex, "appendSamplesInside");
+  detail::checkPose<D>(penetrated.pose, penetratedIndex, "appendSamplesInside");  // [samples_inside_core]
   const Shape<D>& shapeB = *penetrated.shape;
   const Aabb<D> boxB = shapeB.bounds().inflated(settings.cullMargin);
   // x_B = R_B^T (x_A + R_A s - x_B) = M s + t: one matrix for all samples (Eq. (7.2)).
@@ -211,7 +211,7 @@ void appendSamplesInside(const CollisionBody<D>& owner, int ownerIndex,
     sample.sampleIndex = static_cast<int>(k);
     out.push_back(sample);
   }
-  if (counters != nullptr) {
+  if (counters != nullptr) {  // [samples_inside_core]
     counters->samplesTransformed += static_cast<std::int64_t>(sampleCount);
     counters->samplesCulled += culled;
     counters->phiQueries += queries;

@@ -219,7 +219,7 @@ SdfGrid<D> buildSdfGrid(const SurfaceMesh<D>& mesh, const SdfGridSettings& setti
     }
     return p;
   };
-
+  // [grid_node_distances]
   // 1. Exact unsigned distance at every node (Eqs. (6.3)-(6.5)), nearest face first tried:
   //    the previous node's, which is close along the fastest axis.
   const FaceBvh<D> bvh(mesh, settings.bvhLeafSize);
@@ -230,7 +230,7 @@ SdfGrid<D> buildSdfGrid(const SurfaceMesh<D>& mesh, const SdfGridSettings& setti
     distance[i] = nearest.distance();
     hint = nearest.face;
   }
-  SdfBuildStats stats;
+  SdfBuildStats stats;  // [grid_node_distances]
   stats.nodes = total;
   stats.faceTests = bvh.faceTests();
 
@@ -248,7 +248,7 @@ SdfGrid<D> buildSdfGrid(const SurfaceMesh<D>& mesh, const SdfGridSettings& setti
     for (std::int64_t i = 0; i < total; ++i) {
       if (distance[i] > onSurface) inside[i] = evaluate(i);
     }
-  } else {
+  } else {  // [grid_sign_regions]
     // Union-find over the links i -- i + e_k with d_i + d_j > h (Eq. (6.10)): the two balls
     // of radius d_i and d_j hold no surface point and together cover the segment between
     // the nodes, so the segment does not cross the surface and w is the same at both ends.
@@ -291,7 +291,7 @@ SdfGrid<D> buildSdfGrid(const SurfaceMesh<D>& mesh, const SdfGridSettings& setti
       if (distance[rep] > onSurface) regionInside[r] = evaluate(rep);
     }
     for (std::int64_t i = 0; i < total; ++i) inside[i] = regionInside[find(i)];
-  }
+  }  // [grid_sign_regions]
 
   std::vector<double> values(total);
   for (std::int64_t i = 0; i < total; ++i) {

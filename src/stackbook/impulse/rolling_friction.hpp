@@ -80,7 +80,7 @@ RollingFrictionImpulse<D> rollingFrictionImpulse(const RigidBody<D>& a, const Ve
   RollingFrictionImpulse<D> out;
   const AngVec<D> w = a.angularVelocity - b.angularVelocity;
   if (!(jn > 0.0) || !(muRolling > 0.0) || w.isZero(0.0)) return out;
-
+  // [rolling_system]
   const AngMat<D> Ia = a.inverseInertiaWorld(), Ib = b.inverseInertiaWorld();
   Eigen::Matrix<double, N, N> M;
   M.template topLeftCorner<D, D>() = pairCollisionMatrix<D>(a, ra, b, rb);  // Eq. (1.10)
@@ -89,14 +89,14 @@ RollingFrictionImpulse<D> rollingFrictionImpulse(const RigidBody<D>& a, const Ve
   M.template topRightCorner<D, A>() = C;
   M.template bottomLeftCorner<A, D>() = C.transpose();
   M.template bottomRightCorner<A, A>() = Ia + Ib;
-
+  // [rolling_system]
   const Eigen::LDLT<Eigen::Matrix<double, N, N>> ldlt(M);
   const auto d = ldlt.vectorD();
   const double scaleOfM = M.diagonal().cwiseAbs().maxCoeff();
   if (ldlt.info() != Eigen::Success || !(d.minCoeff() > 1e-12 * scaleOfM)) {
     out.singular = true;
     return out;
-  }
+  }  // [rolling_scale]
   Eigen::Matrix<double, N, 1> rhs = Eigen::Matrix<double, N, 1>::Zero();
   rhs.template tail<A>() = -w;  // Delta u = 0, Delta w = -w
   const Eigen::Matrix<double, N, 1> x = ldlt.solve(rhs);  // Eq. (8.6)
@@ -111,7 +111,7 @@ RollingFrictionImpulse<D> rollingFrictionImpulse(const RigidBody<D>& a, const Ve
   out.scale = s;
   out.j = s * x.template head<D>();
   out.tau = s * tauStop;
-  return out;
+  return out;  // [rolling_scale]
 }
 
 /// Apply the impulses of rollingFrictionImpulse(): +j at ra and +tau to a, -j at rb and -tau

@@ -151,7 +151,7 @@ inline ContactLevels topologicalLevels(const ContactGraph& graph,
   auto componentOf = [&](int body) {
     return components.componentOfBody[static_cast<std::size_t>(body)];
   };
-
+  // [kahn_levels]
   // Supporters still to be placed, per component, counting each edge between components.
   std::vector<std::size_t> waitingFor(k, 0);
   for (int body = 0; body < n; ++body) {  // bound: n bodies and m edges
@@ -185,7 +185,7 @@ inline ContactLevels topologicalLevels(const ContactGraph& graph,
       }
     }
   }
-  if (static_cast<std::size_t>(nextLevel) != k) {
+  if (static_cast<std::size_t>(nextLevel) != k) {  // [kahn_levels]
     // Only possible if `components` are not the SCCs of `graph` (a cycle between them).
     throw std::invalid_argument("topologicalLevels: the components leave a cycle in the "
                                 "condensed graph; pass stronglyConnectedComponents(graph)");

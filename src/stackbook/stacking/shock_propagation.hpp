@@ -61,7 +61,7 @@ ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings
   BroadPhaseSettings broad = settings.broad;
   broad.margin = std::max(broad.margin, reach);  // the extra dt^2 |a| of the advanced body
   const std::vector<BodyPair> candidates = sweepAndPrune<D>(views, broad, counters);
-
+  // [graph_direction_test]
   std::vector<ContactPair> edges;
   std::vector<InterferenceCandidate<D>> scratch;  // reused by every query below
   // One candidate pair is tested twice, each body advanced in turn: bound 2 * pairs.
@@ -87,7 +87,7 @@ ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings
       views[k] = old;
     }
   }
-  return ContactGraph(n, edges);
+  return ContactGraph(n, edges);  // [graph_direction_test]
 }
 // [world_contact_graph]
 
@@ -135,7 +135,7 @@ class FreezeGuard {
   FreezeGuard(const FreezeGuard&) = delete;
   FreezeGuard& operator=(const FreezeGuard&) = delete;
   ~FreezeGuard() { releaseAll(); }
-
+  // [freeze_and_release]
   /// Freeze body i; a static or already frozen body is left as it is. Returns true if it
   /// was frozen by this call.
   bool freeze(int i) {
@@ -156,7 +156,7 @@ class FreezeGuard {
     }
     saved_.clear();
   }
-
+  // [freeze_and_release]
   /// Bodies frozen now.
   std::size_t frozenCount() const { return saved_.size(); }
 
@@ -236,7 +236,7 @@ void shockPropagationPass(World<D>& world, const ContactGraph& graph, const Cont
   std::vector<char> isolated(levels.levelCount(), 0);  // decided before anything is frozen
   for (std::size_t l = 0; l < levels.levelCount() && skipIsolated; ++l) {
     isolated[l] = isolatedLevel<D>(world, graph, levels, l) ? 1 : 0;
-  }
+  }  // [shock_levels_loop]
   FreezeGuard<D> frozen(world);
   std::vector<BodyPair> pairs;
   for (std::size_t l = 0; l < levels.levelCount(); ++l) {  // bottom up, Eq. (9.1)
@@ -253,7 +253,7 @@ void shockPropagationPass(World<D>& world, const ContactGraph& graph, const Cont
     for (const int body : levels.bodies(l)) frozen.freeze(body);  // Eq. (9.4)
   }
   frozen.releaseAll();
-  counters.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  counters.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();  // [shock_levels_loop]
 }
 
 template <int D>

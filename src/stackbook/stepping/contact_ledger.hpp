@@ -34,7 +34,7 @@ class ContactLedger {
     double normal = 0.0;
     std::array<double, 3> tangential{0.0, 0.0, 0.0};
   };
-
+  // [ledger_admits]
   /// Would adding impulse j on `owner` (along the owner's unit normal n) keep the pair's
   /// total in the cone of mu? Requires j . n > 0 (never a pulling impulse) and
   /// |P (T + j_t)| <= mu (N + j . n), P the projection on the plane normal to n (Eq. (8.13)).
@@ -52,7 +52,7 @@ class ContactLedger {
     t -= t.dot(n) * n;
     return t.norm() <= mu * normal;  // Eq. (8.13)
   }
-
+    // [ledger_admits]
   /// Add impulse j on `owner`, along the owner's unit normal n, to the pair's total.
   template <int D>
   void record(const BodyPair& pair, int owner, const Vec<D>& j, const Vec<D>& n) {

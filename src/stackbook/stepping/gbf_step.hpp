@@ -157,7 +157,7 @@ StepCounters gbfStep(World<D>& world, const StepSettings& settings,
   if (passReplacesContact) effects.shockPropagation = true;
   // [pass_replaces_contact]
   effects.shockPropagation = effects.shockPropagation && static_cast<bool>(hook);
-
+  // [gbf_step_order]
   // (1) Collisions: where the bodies would be after a free step, with their own e.
   if (effects.collision) {
     const Lookahead lookahead = effects.gravity ? Lookahead::VelocityAndLoads : Lookahead::Velocity;
@@ -194,7 +194,7 @@ StepCounters gbfStep(World<D>& world, const StepSettings& settings,
   for (RigidBody<D>& body : world.bodies) advancePosition<D>(body, dt, settings.rotation);  // Eqs. (5.8)-(5.12)
   counters.positionUpdateSeconds += detail::secondsSince(t);
   detail::quarantine<D>(world, stepStart, counters);  // B21: isolate a body gone non-finite
-  counters.totalSeconds = detail::secondsSince(start);
+  counters.totalSeconds = detail::secondsSince(start);  // [gbf_step_order]
   return counters;
 }
 // [gbf_step]

@@ -120,7 +120,7 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
     // GBF's rule needs normals only until the deepest approaching sample is found: the
     // lazy search picks the same sample with the same bits (chapter 7). The centre rule
     // needs every sample's normal, and the exact deepest points of chapter 11 are found
-    // by pairInterference() alone.
+    // by pairInterference() alone.  // [pair_deepest_impulse]
     const std::optional<InterferenceSample<D>> point =
         settings.impulsePoint.rule == ImpulsePointRule::Deepest &&
                 settings.detection.narrow.surfaceQuery == SurfaceQuery::Samples
@@ -140,7 +140,7 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
     }
     const PairMaterial material = world.pairMaterial(s.owner, s.other);     // Eq. (8.4)
     const double e = spec.restitution(sweep, material);
-    ContactImpulse<D> impulse;
+    ContactImpulse<D> impulse;  // [pair_deepest_impulse]
     if (spec.friction) {
       ++counters.frictionEvaluations;
       impulse = frictionalImpulse<D>(K, u, s.normal, e, material.friction, settings.friction);

@@ -33,7 +33,7 @@ StepCounters traditionalStep(World<D>& world, const StepSettings& settings,
   Effects effects = resolveEffects<D>(world, settings.effects);
   effects.shockPropagation = effects.shockPropagation && static_cast<bool>(hook);
   counters.effects = effects;
-
+  // [traditional_order]
   auto t = std::chrono::steady_clock::now();
   if (effects.gravity) {
     for (int i = 0; i < world.size(); ++i) {
@@ -53,7 +53,7 @@ StepCounters traditionalStep(World<D>& world, const StepSettings& settings,
     runImpulseStage<D>(world, contactStageSpec(settings, effects, Lookahead::Current), dt,
                        settings, counters.contact);
   }
-  if (effects.shockPropagation) {
+  if (effects.shockPropagation) {  // [traditional_order]
     t = std::chrono::steady_clock::now();
     hook(world, settings, counters);
     counters.hookSeconds += detail::secondsSince(t);
