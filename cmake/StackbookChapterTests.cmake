@@ -14,7 +14,7 @@
 # STACKBOOK_EXERCISES=ON registers one entry per exercise, "exNN.M" (labels: exercise, chNN),
 # which says in one line that the exercise is not solved yet while its stub keeps a
 # "// TODO(reader)" comment and runs its test cases after (cmake/run_exercise.cmake), and
-# "exercises/solved", which runs last and prints "N of 31 exercises solved".
+# "exercises/solved", which runs last and prints "N of M exercises solved" (M: every exercise).
 # The target stackbook_exercises builds every chapter's exercise binary (and nothing else).
 # STACKBOOK_SOLUTIONS=ON (the main preset) also builds test_chNN_solutions from the same
 # compiled exercises.cpp with the solutions linked, registered as "chNN/solutions" (labels
