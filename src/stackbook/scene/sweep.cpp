@@ -538,8 +538,11 @@ std::vector<std::string> plotSweep(const SweepSpec& spec, const std::string& csv
     lines[rows[r][3]].push_back(r);
   }
   std::ostringstream gp;
-  gp << "set terminal svg size 720,480 dynamic font 'sans,12'\nset logscale xy\nset grid\n"
-     << "set xlabel 'ms of computation per simulated second'\nset key outside right top\n";
+  // noenhanced: scene and knob names are shown as written (gnuplot's enhanced text would
+  // turn the underscore of "tumbling_box" into a subscript); the key goes below the plot so
+  // that long configuration names do not narrow it.
+  gp << "set terminal svg size 720,480 dynamic noenhanced font 'sans,12'\nset logscale xy\nset grid\n"
+     << "set xlabel 'ms of computation per simulated second'\nset key below\n";
   std::vector<std::string> svgs;
   for (std::size_t e = 0; e < spec.errors.size(); ++e) {
     const std::string name = fileStem(spec.errors[e].name);
