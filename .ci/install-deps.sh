@@ -4,6 +4,7 @@
 #   doctest-dev    doctest 2.4.9 (tests)
 #   libtinyobjloader-dev   reading OBJ meshes
 #   libassimp-dev  reading STL and PLY meshes
+#   libtbb-dev     oneTBB: the step's threads (chapter 10)
 #   ccache         faster rebuilds (optional; changes no result)
 #   nlohmann-json3-dev, libcli11-dev, libtinygltf-dev, libjs-three   the simulator: scene
 #       files (JSON), the command line, animated glTF output and its offline viewer page
@@ -16,7 +17,7 @@ if [ "$(id -u)" -eq 0 ]; then SUDO=""; else SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
-  g++ cmake make ccache libeigen3-dev doctest-dev libtinyobjloader-dev libassimp-dev \
+  g++ cmake make ccache libeigen3-dev doctest-dev libtinyobjloader-dev libassimp-dev libtbb-dev \
   nlohmann-json3-dev libcli11-dev libtinygltf-dev libjs-three \
   doxygen graphviz libjs-mathjax libbox2d-dev libbullet-dev gnuplot-nox >/dev/null
 echo "stackbook: Debian packages installed."

@@ -15,11 +15,14 @@
 // every STATE_HASH; one that only skips work may lower the detection counts (and so
 // change COUNTER_HASH) while the state stays the same bit for bit.
 //
-//   scene_hashes [--steps N] [--full-steps M] [--scenes DIR] [NAME ...]
+//   scene_hashes [--steps N] [--full-steps M] [--threads T] [--scenes DIR] [NAME ...]
 //
 //   --steps N       at most N steps per scene (default: each scene's own duration / dt)
 //   --full-steps M  steps for the full-size scenes (file names ending in "_full.json"),
 //                   which take minutes at their own duration (default 150)
+//   --threads T     run every scene with T threads (solver.threads; 0: every hardware
+//                   thread; default: the scene's own setting). The hashes must not depend on T
+//                   (chapter 10, "Threads")
 //   --scenes DIR    the folder of scene files (default: the repository's scenes/)
 //   NAME ...        only these scenes (file stems)
 //
@@ -127,7 +130,7 @@ bool isFullSize(const fs::path& path) {
 }
 
 int usage(const char* program) {
-  std::cerr << "usage: " << program << " [--steps N] [--full-steps M] [--scenes DIR] [NAME ...]\n";
+  std::cerr << "usage: " << program << " [--steps N] [--full-steps M] [--threads T] [--scenes DIR] [NAME ...]\n";
   return 2;
 }
 
@@ -141,6 +144,7 @@ int main(int argc, char** argv) {
 #else
   fs::path scenes = fs::path(__FILE__).parent_path().parent_path() / "scenes";
 #endif
+  int threads = -1;  // -1: the scene's own solver.threads
   std::vector<std::string> names;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -150,6 +154,9 @@ int main(int argc, char** argv) {
     } else if (arg == "--full-steps" && i + 1 < argc) {
       fullSteps = std::atoll(argv[++i]);
       if (fullSteps <= 0) return usage(argv[0]);
+    } else if (arg == "--threads" && i + 1 < argc) {
+      threads = std::atoi(argv[++i]);
+      if (threads < 0 || threads > 1024) return usage(argv[0]);
     } else if (arg == "--scenes" && i + 1 < argc) {
       scenes = argv[++i];
     } else if (!arg.empty() && arg[0] == '-') {
@@ -177,7 +184,8 @@ int main(int argc, char** argv) {
   for (const fs::path& file : files) {
     const std::string name = file.stem().string();
     try {
-      const Scene scene = loadScene(file.string());
+      Scene scene = loadScene(file.string());
+      if (threads >= 0) scene.settings.parallel.threads = threads;
       std::int64_t steps = static_cast<std::int64_t>(std::ceil(scene.duration / scene.settings.dt - 1e-9));
       if (isFullSize(file)) steps = std::min(steps, fullSteps);
       if (fixedSteps > 0) steps = std::min(steps, fixedSteps);

@@ -33,6 +33,8 @@ if(_stackbook_assimp_links)
   list(REMOVE_ITEM _stackbook_assimp_links draco::draco)
   set_target_properties(assimp::assimp PROPERTIES INTERFACE_LINK_LIBRARIES "${_stackbook_assimp_links}")
 endif()
+# Threads (chapter 10): oneTBB's parallel loops, inside the library only.
+stackbook_require_package(TBB libtbb-dev)
 # The simulator (chapter 10): scene files in JSON, the command line, glTF output.
 stackbook_require_package(nlohmann_json nlohmann-json3-dev 3.10)
 stackbook_require_package(CLI11 libcli11-dev)

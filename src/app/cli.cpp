@@ -151,6 +151,7 @@ struct RunArgs {
   std::string out;
   std::optional<double> duration;
   std::optional<double> dt;
+  std::optional<long long> threads;
   std::vector<std::string> sets;
   bool quiet = false;
 };
@@ -170,6 +171,7 @@ int runCommand(const RunArgs& args, bool demo) {
     std::vector<std::string> overrides = args.sets;
     if (args.dt) overrides.push_back("dt=" + formatValue(*args.dt));
     if (args.duration) overrides.push_back("duration=" + formatValue(*args.duration));
+    if (args.threads) overrides.push_back("solver.threads=" + std::to_string(*args.threads));
     scene = loadScene(path, overrides);
   } catch (const SceneError& e) {
     return reportError(e.what(), kBadInput);
@@ -314,6 +316,9 @@ int runCli(int argc, char** argv) {
     // same one-line message as a bad value in the file.
     runApp->add_option("--duration", run.duration, "Simulated seconds (overrides the scene's duration)");
     runApp->add_option("--dt", run.dt, "Time step in seconds (overrides the scene's dt)");
+    runApp->add_option("--threads", run.threads,
+                       "Threads a step may use (overrides solver.threads; 0: every hardware thread, the "
+                       "default). The result is the same for any number");
     runApp->add_option("--set", run.sets,
                        "Override a scene field before the checks: key=value, key a path like "
                        "solver.contactIterations or bodies.2.velocity, value JSON (repeatable)");

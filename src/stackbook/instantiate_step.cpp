@@ -16,7 +16,7 @@ namespace stackbook {
                               const StageSpec&, int, double, const StepSettings&,              \
                               StageCounters&);                                                 \
   template std::vector<CollisionBody<D>> stageViews<D>(const World<D>&, Lookahead, double,     \
-                                                       RotationUpdate);                        \
+                                                       RotationUpdate, const ParallelSettings&); \
   template int sweepPairs<D>(World<D>&, std::vector<CollisionBody<D>>&,                        \
                              const std::vector<BodyPair>&, const StageSpec&, int, double,      \
                              const StepSettings&, StageCounters&);                             \

@@ -119,8 +119,21 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
   r.requireObject(solver, p,
                   {"collisionIterations", "collisionPairIterations", "contactIterations",
                    "contactPairIterations", "contactRestitution", "shock", "order", "impulsePoint",
-                   "impulsePointNormalCosine", "frictionCone", "rotation", "surfaceQuery"},
+                   "impulsePointNormalCosine", "frictionCone", "rotation", "surfaceQuery", "threads", "sleep"},
                   "the solver settings");
+  // Threads (chapter 10): 0 is every hardware thread; any count gives the same result.
+  if (const json* v = member(solver, "threads")) s.parallel.threads = r.integer(*v, p + "/threads", 0, 1024);
+  // Sleeping (chapter 8): off unless the scene asks for it.
+  if (const json* sleep = member(solver, "sleep")) {
+    const std::string q = p + "/sleep";
+    r.requireObject(*sleep, q, {"enabled", "linearSpeed", "angularSpeed", "time", "wakeMargin"},
+                    "the sleep settings");
+    if (const json* v = member(*sleep, "enabled")) s.sleep.enabled = r.boolean(*v, q + "/enabled");
+    if (const json* v = member(*sleep, "linearSpeed")) s.sleep.linearSpeed = r.nonNegative(*v, q + "/linearSpeed");
+    if (const json* v = member(*sleep, "angularSpeed")) s.sleep.angularSpeed = r.nonNegative(*v, q + "/angularSpeed");
+    if (const json* v = member(*sleep, "time")) s.sleep.time = r.nonNegative(*v, q + "/time");
+    if (const json* v = member(*sleep, "wakeMargin")) s.sleep.wakeMargin = r.nonNegative(*v, q + "/wakeMargin");
+  }
   if (const json* v = member(solver, "collisionIterations")) s.collisionIterations = r.integer(*v, p + "/collisionIterations", 0, 1000);
   if (const json* v = member(solver, "collisionPairIterations")) s.collisionPairIterations = r.integer(*v, p + "/collisionPairIterations", 1, 1000);
   if (const json* v = member(solver, "contactIterations")) s.contactIterations = r.integer(*v, p + "/contactIterations", 0, 1000);

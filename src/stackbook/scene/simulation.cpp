@@ -123,6 +123,7 @@ json stageJson(const StageCounters& s) {
               {"elastic", s.elasticImpulses},
               {"rolling", s.rollingImpulses},
               {"pairIterationCapHits", s.pairIterationCapHits},
+              {"islandSweeps", s.islandSweeps},
               {"pairQueries", s.detection.pairQueries},
               {"phiQueries", s.detection.phiQueries},
               {"interferenceSamples", s.detection.interferenceSamples}};
@@ -174,6 +175,13 @@ json runSummaryJson(const Scene& scene, const SceneRun& run) {
               {"contact", stageJson(c.contact)},
               {"shockPropagation", stageJson(c.shock)},
               {"positionUpdate", {{"seconds", c.positionUpdateSeconds}}}}},
+            {"threads", resolvedThreadCount(scene.settings.parallel.threads)},
+            {"sleep",
+             {{"enabled", scene.settings.sleep.enabled},
+              {"bodyStepsAsleep", c.sleep.sleepingBodySteps},
+              {"fellAsleep", c.sleep.fellAsleep},
+              {"wokenUp", c.sleep.wokenUp},
+              {"asleepAtEnd", c.sleep.sleepingAtEnd}}},
             {"maxPenetration", r.maxPenetration},
             {"maxPenetrationTime", r.maxPenetrationTime},
             {"energy", {{"start", energyJson(r.energyStart)}, {"end", energyJson(r.energyEnd)}}},
@@ -208,6 +216,11 @@ std::string runSummaryText(const json& s) {
   }
   out << "  velocity update " << s.at("stages").at("velocityUpdate").at("seconds").get<double>()
       << " s, position update " << s.at("stages").at("positionUpdate").at("seconds").get<double>() << " s\n";
+  if (const json& sl = s.at("sleep"); sl.at("enabled").get<bool>()) {
+    out << "  sleeping: " << sl.at("bodyStepsAsleep").get<std::int64_t>() << " body-steps asleep, "
+        << sl.at("fellAsleep").get<std::int64_t>() << " fell asleep, " << sl.at("wokenUp").get<std::int64_t>()
+        << " woken, " << sl.at("asleepAtEnd").get<std::int64_t>() << " asleep at the end\n";
+  }
   out << "  max penetration " << s.at("maxPenetration").get<double>() << " at t = "
       << s.at("maxPenetrationTime").get<double>() << " s\n";
   const json& e = s.at("energy");

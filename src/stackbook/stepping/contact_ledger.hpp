@@ -7,6 +7,8 @@
 #include <array>
 #include <cstddef>
 #include <map>
+#include <mutex>
+#include <optional>
 #include <utility>
 
 #include "stackbook/collision/broad_phase.hpp"
@@ -45,9 +47,9 @@ class ContactLedger {
     const auto [key, sign] = keyOf(pair, owner);
     Vec<D> t = sign * (j - jn * n);
     double normal = jn;
-    if (const auto it = totals_.find(key); it != totals_.end()) {
-      for (int k = 0; k < D; ++k) t[k] += it->second.tangential[static_cast<std::size_t>(k)];
-      normal += it->second.normal;
+    if (const std::optional<Total> total = lookup(key)) {
+      for (int k = 0; k < D; ++k) t[k] += total->tangential[static_cast<std::size_t>(k)];
+      normal += total->normal;
     }
     t -= t.dot(n) * n;
     return t.norm() <= mu * normal;  // Eq. (8.13)
@@ -57,6 +59,7 @@ class ContactLedger {
   template <int D>
   void record(const BodyPair& pair, int owner, const Vec<D>& j, const Vec<D>& n) {
     const auto [key, sign] = keyOf(pair, owner);
+    const std::lock_guard<std::mutex> lock(mutex_);
     Total& total = totals_[key];
     const double jn = j.dot(n);
     const Vec<D> t = sign * (j - jn * n);
@@ -66,13 +69,45 @@ class ContactLedger {
 
   /// The pair's total, or nullptr if it exchanged no impulse.
   const Total* find(const BodyPair& pair) const {
+    const std::lock_guard<std::mutex> lock(mutex_);
     const auto it = totals_.find(ordered(pair));
     return it == totals_.end() ? nullptr : &it->second;
   }
-  std::size_t size() const { return totals_.size(); }
-  void clear() { totals_.clear(); }
+  std::size_t size() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return totals_.size();
+  }
+  void clear() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    totals_.clear();
+  }
+
+  // Islands of a sweep run on several threads (chapter 10) and record into one ledger:
+  // each pair's entry is only ever touched by its own island, but the map's structure is
+  // shared, so every access holds the mutex. The mutex itself is not copied.
+  ContactLedger() = default;
+  ContactLedger(const ContactLedger& o) : totals_(o.copyOfTotals()) {}
+  ContactLedger& operator=(const ContactLedger& o) {
+    if (this != &o) {
+      std::map<BodyPair, Total> copy = o.copyOfTotals();
+      const std::lock_guard<std::mutex> lock(mutex_);
+      totals_ = std::move(copy);
+    }
+    return *this;
+  }
 
  private:
+  std::optional<Total> lookup(const BodyPair& key) const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = totals_.find(key);
+    if (it == totals_.end()) return std::nullopt;
+    return it->second;
+  }
+  std::map<BodyPair, Total> copyOfTotals() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return totals_;
+  }
+
   static BodyPair ordered(const BodyPair& p) {
     return p.first < p.second ? p : BodyPair{p.second, p.first};
   }
@@ -83,6 +118,7 @@ class ContactLedger {
   }
 
   std::map<BodyPair, Total> totals_;  // ordered: deterministic, no hashing
+  mutable std::mutex mutex_;
 };
 // [contact_ledger]
 

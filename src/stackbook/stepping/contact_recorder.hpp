@@ -65,6 +65,10 @@ class ContactRecorder {
     records_.push_back(r);
   }
 
+  /// Append a record as it is (to merge the recorders of islands run on several threads,
+  /// chapter 10).
+  void add(const ContactRecord& r) { records_.push_back(r); }
+
   const std::vector<ContactRecord>& records() const { return records_; }
   std::size_t size() const { return records_.size(); }
   void clear() { records_.clear(); }

@@ -43,6 +43,10 @@ struct Effects {
   /// Needed when two dynamic bodies can touch each other (a body can rest on another
   /// dynamic body); runs only in a step that is given the pass.
   bool shockPropagation = false;
+  /// Sleeping (StepSettings::sleep): islands at rest stop being simulated until an awake
+  /// body comes near. Never inferred: it changes results where bodies rest, so it runs
+  /// only when the settings ask for it (and the step has a dynamic body).
+  bool sleeping = false;
 
   bool operator==(const Effects&) const = default;
 
@@ -61,6 +65,7 @@ struct Effects {
     put(friction, "friction");
     put(rollingFriction, "rolling-friction");
     put(shockPropagation, "shock-propagation");
+    put(sleeping, "sleeping");
     return out.tellp() > 0 ? out.str() : std::string("none");
   }
 };

@@ -4,6 +4,7 @@
 /// bodies' restitution, (2) velocity update, (3) contact with a restitution ramp ending
 /// at 0, [hook: shock propagation, chapter 9], (4) position update.
 
+#include <algorithm>
 #include <chrono>
 #include <functional>
 #include <sstream>
@@ -13,6 +14,7 @@
 
 #include "stackbook/stepping/effects.hpp"
 #include "stackbook/stepping/impulse_stage.hpp"
+#include "stackbook/stepping/sleeping.hpp"
 
 namespace stackbook {
 
@@ -145,8 +147,16 @@ StepCounters gbfStep(World<D>& world, const StepSettings& settings,
   const double dt = settings.dt;
   StepCounters counters;
   counters.steps = 1;
+  // [step_sleep_start]
+  // Sleeping (StepSettings::sleep): wake the islands an awake body comes near, then make
+  // the sleepers static for this step, so the effects below see only the awake bodies.
+  const bool sleeping = settings.sleep.enabled;
+  if (sleeping) wakeTouched<D>(world, settings, counters.sleep);
+  SleepGuard<D> sleepers(world, counters.sleep, sleeping);
+  // [step_sleep_start]
   const detail::StepStart<D> stepStart(world);
   Effects effects = resolveEffects<D>(world, settings.effects);
+  effects.sleeping = sleeping;
   // [pass_replaces_contact]
   // The pass as the contact stage (chapter 9, Eq. (9.9)): whenever contact runs, the
   // shock-propagation hook runs instead of the contact stage, also for one dynamic body,
@@ -167,10 +177,16 @@ StepCounters gbfStep(World<D>& world, const StepSettings& settings,
 
   // (2) Velocity update with the forces.
   auto t = std::chrono::steady_clock::now();
+  // Each body's update reads and writes that body only: blocks of bodies run on several
+  // threads (settings.parallel) with the serial loop's result.
+  const std::size_t bodyGrain = static_cast<std::size_t>(settings.parallel.bodiesPerTask);
   if (effects.gravity) {
-    for (int i = 0; i < world.size(); ++i) {
-      advanceVelocity<D>(world.bodies[static_cast<std::size_t>(i)], dt, world.loads(i));  // Eq. (5.7)
-    }
+    parallelFor(settings.parallel.threads, world.bodies.size(), bodyGrain,
+                [&world, dt](std::size_t begin, std::size_t end) {
+                  for (std::size_t k = begin; k < end; ++k) {
+                    advanceVelocity<D>(world.bodies[k], dt, world.loads(static_cast<int>(k)));  // Eq. (5.7)
+                  }
+                });
   }
   counters.velocityUpdateSeconds += detail::secondsSince(t);
 
@@ -191,9 +207,21 @@ StepCounters gbfStep(World<D>& world, const StepSettings& settings,
 
   // (5) Position update with the velocities contact left.
   t = std::chrono::steady_clock::now();
-  for (RigidBody<D>& body : world.bodies) advancePosition<D>(body, dt, settings.rotation);  // Eqs. (5.8)-(5.12)
+  parallelFor(settings.parallel.threads, world.bodies.size(), bodyGrain,
+              [&world, dt, &settings](std::size_t begin, std::size_t end) {
+                for (std::size_t k = begin; k < end; ++k) {
+                  advancePosition<D>(world.bodies[k], dt, settings.rotation);  // Eqs. (5.8)-(5.12)
+                }
+              });
   counters.positionUpdateSeconds += detail::secondsSince(t);
   detail::quarantine<D>(world, stepStart, counters);  // B21: isolate a body gone non-finite
+  // [step_sleep_end]
+  sleepers.release();
+  if (sleeping) {
+    fallAsleep<D>(world, settings, counters.sleep);
+    counters.sleep.sleepingAtEnd = std::count(world.asleep.begin(), world.asleep.end(), char{1});
+  }
+  // [step_sleep_end]
   counters.totalSeconds = detail::secondsSince(start);  // [gbf_step_order]
   return counters;
 }

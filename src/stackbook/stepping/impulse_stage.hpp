@@ -7,9 +7,14 @@
 /// restitution; the traditional order runs it at the current poses.
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
+#include <exception>
 #include <functional>
+#include <limits>
+#include <numeric>
 #include <optional>
 #include <vector>
 
@@ -21,6 +26,8 @@
 #include "stackbook/impulse/rolling_friction.hpp"
 #include "stackbook/stepping/contact_ledger.hpp"
 #include "stackbook/stepping/contact_recorder.hpp"
+#include "stackbook/stepping/pair_islands.hpp"
+#include "stackbook/stepping/parallel.hpp"
 #include "stackbook/stepping/step_counters.hpp"
 #include "stackbook/stepping/step_settings.hpp"
 #include "stackbook/stepping/world.hpp"
@@ -186,10 +193,17 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
     }
     // [pair_rolling]
     ++applied;
-    views[static_cast<std::size_t>(s.owner)].pose =
-        testedPose<D>(world, s.owner, spec.lookahead, dt, settings.rotation);
-    views[static_cast<std::size_t>(s.other)].pose =
-        testedPose<D>(world, s.other, spec.lookahead, dt, settings.rotation);
+    // Re-predict the pair's dynamic bodies. A static body's tested pose cannot change (no
+    // impulse moves it), so it is left alone: the views of static bodies stay constant
+    // for the whole sweep, which is what lets islands run at the same time (chapter 10).
+    if (!owner.isStatic()) {
+      views[static_cast<std::size_t>(s.owner)].pose =
+          testedPose<D>(world, s.owner, spec.lookahead, dt, settings.rotation);
+    }
+    if (!other.isStatic()) {
+      views[static_cast<std::size_t>(s.other)].pose =
+          testedPose<D>(world, s.other, spec.lookahead, dt, settings.rotation);
+    }
     // [pair_converged]
     // The loop has converged when an impulse is a small fraction of the visit's first one
     // (chapter 8, "Ending the loops"); off (0), GBF's loop runs to separation or the cap.
@@ -210,30 +224,131 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
 // [pair_impulse]
 
 // [stage_views]
-/// The collision view of every body at its tested pose under `lookahead`.
+/// The collision view of every body at its tested pose under `lookahead`. Each view
+/// depends on its own body only, so blocks of bodies are built on several threads
+/// (settings.bodiesPerTask per block at least) with the same result.
 template <int D>
 std::vector<CollisionBody<D>> stageViews(const World<D>& world, Lookahead lookahead, double dt,
-                                         RotationUpdate rotation = RotationUpdate::ExponentialMap) {
-  std::vector<CollisionBody<D>> views;
-  views.reserve(world.bodies.size());
-  for (int i = 0; i < world.size(); ++i) {
-    const std::size_t k = static_cast<std::size_t>(i);
-    views.push_back(collisionBodyAt<D>(world.bodies[k], *world.shapes[k],
-                                       testedPose<D>(world, i, lookahead, dt, rotation)));
-  }
+                                         RotationUpdate rotation = RotationUpdate::ExponentialMap,
+                                         const ParallelSettings& parallel = {1, 16, 256}) {
+  std::vector<CollisionBody<D>> views(world.bodies.size());
+  parallelFor(parallel.threads, views.size(), static_cast<std::size_t>(parallel.bodiesPerTask),
+              [&](std::size_t begin, std::size_t end) {
+                for (std::size_t k = begin; k < end; ++k) {
+                  views[k] = collisionBodyAt<D>(world.bodies[k], *world.shapes[k],
+                                                testedPose<D>(world, static_cast<int>(k), lookahead, dt, rotation));
+                }
+              });
   return views;
 }
 // [stage_views]
 
+// [sweep_islands]
+/// One sweep with its islands (pairIslands()) run at the same time on up to `threads`
+/// threads, each island's pairs in the sweep's order. Each island counts into its own
+/// StageCounters, and they are added in island order afterwards, so the counts are the
+/// serial sweep's. If pairs throw, the exception of the first of them in the sweep's order
+/// is rethrown: the one the serial sweep would have thrown, since the islands before it
+/// ran exactly as they would have.
+template <int D>
+int sweepIslands(World<D>& world, std::vector<CollisionBody<D>>& views,
+                 const std::vector<BodyPair>& pairs, const PairIslands& islands,
+                 const StageSpec& spec, int sweep, double dt, const StepSettings& settings,
+                 StageCounters& counters, int threads) {
+  const std::size_t count = islands.islandCount();
+  // Largest islands first, so that a big island is not started last (ties: island order).
+  std::vector<std::size_t> order(count);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&islands](std::size_t a, std::size_t b) { return islands.size(a) > islands.size(b); });
+  std::vector<StageCounters> local(count);
+  std::vector<int> applied(count, 0);
+  // A contact recorder wants the impulses in the serial order: each island records into
+  // its own, noting the pair of every record, and the records are merged by pair below.
+  // The largest approach speed of the loop tolerances (spec.largestApproach) is raised by
+  // every pair: each island raises its own, and the maximum of those is the serial one
+  // (a maximum does not depend on the order it is taken in).
+  const bool recording = spec.recorder != nullptr;
+  const bool measuring = spec.largestApproach != nullptr;
+  const bool ownSpec = recording || measuring;
+  std::vector<StageSpec> islandSpec(ownSpec ? count : 0, spec);
+  std::vector<ContactRecorder> recorders(recording ? count : 0);
+  std::vector<std::vector<std::size_t>> recordPair(recording ? count : 0);
+  std::vector<double> largest(measuring ? count : 0, measuring ? *spec.largestApproach : 0.0);
+  for (std::size_t c = 0; c < islandSpec.size(); ++c) {
+    if (recording) islandSpec[c].recorder = &recorders[c];
+    if (measuring) islandSpec[c].largestApproach = &largest[c];
+  }
+  std::vector<std::exception_ptr> error(count);
+  constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> errorPair(count, kNone);
+  parallelFor(threads, count, 1, [&](std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k < last; ++k) {
+      const std::size_t c = order[k];
+      for (std::size_t i = islands.begin[c]; i < islands.begin[c + 1]; ++i) {
+        const std::size_t p = islands.pairs[i];
+        try {
+          ++local[c].pairVisits;
+          applied[c] += resolvePair<D>(world, views, pairs[p], ownSpec ? islandSpec[c] : spec, sweep,
+                                       dt, settings, local[c]);
+          if (recording) recordPair[c].resize(recorders[c].size(), p);
+        } catch (...) {
+          error[c] = std::current_exception();
+          errorPair[c] = p;
+          break;
+        }
+      }
+    }
+  });
+  std::size_t firstError = kNone, firstErrorIsland = 0;
+  for (std::size_t c = 0; c < count; ++c) {
+    if (errorPair[c] < firstError) {
+      firstError = errorPair[c];
+      firstErrorIsland = c;
+    }
+  }
+  if (firstError != kNone) std::rethrow_exception(error[firstErrorIsland]);
+  for (const double l : largest) *spec.largestApproach = std::max(*spec.largestApproach, l);
+  if (recording) {  // all of a pair's records are consecutive, and pairs in list order
+    std::vector<std::array<std::size_t, 3>> order3;  // (pair, island, index in island)
+    for (std::size_t c = 0; c < count; ++c) {
+      for (std::size_t r = 0; r < recordPair[c].size(); ++r) order3.push_back({recordPair[c][r], c, r});
+    }
+    std::sort(order3.begin(), order3.end());
+    for (const auto& [p, c, r] : order3) spec.recorder->add(recorders[c].records()[r]);
+  }
+  ++counters.islandSweeps;
+  counters.islands += static_cast<std::int64_t>(count);
+  counters.islandPairs += static_cast<std::int64_t>(pairs.size());
+  counters.largestIslandPairs += static_cast<std::int64_t>(islands.size(order.front()));
+  int total = 0;
+  for (std::size_t c = 0; c < count; ++c) {  // island order: the same sums for any thread count
+    counters += local[c];
+    total += applied[c];
+  }
+  return total;
+}
+// [sweep_islands]
+
 // [sweep_pairs]
 /// One sweep over a given list of pairs: resolvePair() on each, in list order. Returns
 /// the number of impulses applied. Chapter 9's shock propagation sweeps each level's
-/// pairs with this, the stages below sweep the broad phase's pairs.
+/// pairs with this, the stages below sweep the broad phase's pairs. With more than one
+/// thread (settings.parallel) and at least settings.parallel.minPairs pairs, the pairs'
+/// islands run at the same time (sweepIslands()), which performs the same floating-point
+/// operations on the same data as the loop below (chapter 10, Eq. (10.8)).
 template <int D>
 int sweepPairs(World<D>& world, std::vector<CollisionBody<D>>& views,
                const std::vector<BodyPair>& pairs, const StageSpec& spec, int sweep, double dt,
                const StepSettings& settings, StageCounters& counters) {
   ++counters.sweeps;
+  const int threads = resolvedThreadCount(settings.parallel.threads);
+  if (threads > 1 && pairs.size() >= static_cast<std::size_t>(std::max(settings.parallel.minPairs, 2))) {
+    const PairIslands islands = pairIslands<D>(world, pairs);
+    if (islands.islandCount() > 1) {
+      return sweepIslands<D>(world, views, pairs, islands, spec, sweep, dt, settings, counters, threads);
+    }
+  }
   int applied = 0;
   for (const BodyPair& pair : pairs) {
     ++counters.pairVisits;
@@ -252,7 +367,7 @@ template <int D>
 void runImpulseStage(World<D>& world, const StageSpec& spec, double dt,
                      const StepSettings& settings, StageCounters& counters) {
   const auto start = std::chrono::steady_clock::now();
-  std::vector<CollisionBody<D>> views = stageViews<D>(world, spec.lookahead, dt, settings.rotation);
+  std::vector<CollisionBody<D>> views = stageViews<D>(world, spec.lookahead, dt, settings.rotation, settings.parallel);
   // The residual test (chapter 8, "Ending the loops"): with a tolerance, a sweep whose
   // fastest approach was at most stageApproachTolerance ends the stage too.
   StageSpec measured = spec;
@@ -277,7 +392,7 @@ void runImpulseStage(World<D>& world, const StageSpec& spec, double dt,
                                      const StageSpec&, int, double, const StepSettings&,        \
                                      StageCounters&);                                            \
   extern template std::vector<CollisionBody<D>> stageViews<D>(const World<D>&, Lookahead, double, \
-                                                              RotationUpdate);                   \
+                                                              RotationUpdate, const ParallelSettings&); \
   extern template int sweepPairs<D>(World<D>&, std::vector<CollisionBody<D>>&,                  \
                                     const std::vector<BodyPair>&, const StageSpec&, int, double, \
                                     const StepSettings&, StageCounters&);                       \

@@ -31,6 +31,14 @@ struct StageCounters {
   std::int64_t elasticImpulses = 0;       ///< impulses applied with e > 0 (restitution effect on)
   std::int64_t rollingImpulses = 0;       ///< rolling/spinning friction impulses applied
   std::int64_t stepConeSticks = 0;        ///< of the sticking ones: admitted by the step's cone only
+  /// Threads (chapter 10): sweeps that ran as islands on several threads, the islands of
+  /// those sweeps, and the pairs of the largest island of each (its share of the sweep's
+  /// pairs bounds what threads can buy). Zero with one thread; the only counts here that
+  /// depend on the thread count.
+  std::int64_t islandSweeps = 0;
+  std::int64_t islands = 0;
+  std::int64_t islandPairs = 0;         ///< pairs of those sweeps
+  std::int64_t largestIslandPairs = 0;  ///< summed over those sweeps
   DetectionCounters detection;       ///< broad and narrow phase work
   double seconds = 0.0;              ///< wall time (std::chrono::steady_clock)
 
@@ -55,6 +63,10 @@ struct StageCounters {
     elasticImpulses += o.elasticImpulses;
     rollingImpulses += o.rollingImpulses;
     stepConeSticks += o.stepConeSticks;
+    islandSweeps += o.islandSweeps;
+    islands += o.islands;
+    islandPairs += o.islandPairs;
+    largestIslandPairs += o.largestIslandPairs;
     detection += o.detection;
     seconds += o.seconds;
     return *this;
@@ -86,6 +98,24 @@ struct Quarantine {
 };
 // [quarantine]
 
+// [sleep_counters]
+/// What sleeping did (chapter 8, "Sleeping"); all zero while it is off.
+struct SleepCounters {
+  std::int64_t sleepingBodySteps = 0;  ///< body-steps not simulated: a sleeping body, one step
+  std::int64_t fellAsleep = 0;         ///< times a body fell asleep
+  std::int64_t wokenUp = 0;            ///< times a sleeping body was woken
+  std::int64_t sleepingAtEnd = 0;      ///< bodies asleep after the (last) step
+
+  SleepCounters& operator+=(const SleepCounters& o) {
+    sleepingBodySteps += o.sleepingBodySteps;
+    fellAsleep += o.fellAsleep;
+    wokenUp += o.wokenUp;
+    sleepingAtEnd = o.sleepingAtEnd;
+    return *this;
+  }
+};
+// [sleep_counters]
+
 // [step_counters]
 /// The work of one or more steps, stage by stage. Add steps up with +=.
 struct StepCounters {
@@ -93,6 +123,7 @@ struct StepCounters {
   StageCounters collision;  ///< stage (1)
   StageCounters contact;    ///< stage (3)
   StageCounters shock;      ///< shock propagation (chapter 9), summed over levels
+  SleepCounters sleep;      ///< sleeping (chapter 8): bodies skipped, fallen asleep, woken
   /// The effects this step ran (for several steps: those of the last one added).
   Effects effects;
   double velocityUpdateSeconds = 0.0;
@@ -112,6 +143,7 @@ struct StepCounters {
     collision += o.collision;
     contact += o.contact;
     shock += o.shock;
+    sleep += o.sleep;
     effects = o.effects;
     velocityUpdateSeconds += o.velocityUpdateSeconds;
     positionUpdateSeconds += o.positionUpdateSeconds;
@@ -128,6 +160,10 @@ struct StepCounters {
         << "\n  shock:     " << shock.summary() << "\n  velocity update "
         << velocityUpdateSeconds * 1e3 << " ms, position update " << positionUpdateSeconds * 1e3
         << " ms, hook " << hookSeconds * 1e3 << " ms";
+    if (effects.sleeping) {
+      out << "\n  sleep:     " << sleep.sleepingBodySteps << " body-steps asleep, " << sleep.fellAsleep
+          << " fell asleep, " << sleep.wokenUp << " woken, " << sleep.sleepingAtEnd << " asleep now";
+    }
     for (const Quarantine& q : quarantined) out << "\n  quarantined body " << q.body << ": " << q.message;
     return out.str();
   }

@@ -16,6 +16,8 @@
 #include "stackbook/stepping/contact_ledger.hpp"
 #include "stackbook/stepping/contact_recorder.hpp"
 #include "stackbook/stepping/effects.hpp"
+#include "stackbook/stepping/parallel.hpp"
+#include "stackbook/stepping/sleep_settings.hpp"
 
 namespace stackbook {
 
@@ -134,6 +136,11 @@ struct StepSettings {
   /// contacts output). nullptr (the default): nothing is recorded; the trajectory is the
   /// same either way, bit for bit.
   ContactRecorder* contactRecorder = nullptr;
+  /// Threads (chapter 10): how many, and how the work is split. The result is bit for bit
+  /// the same for any thread count.
+  ParallelSettings parallel;
+  /// Sleeping (chapter 8): off by default.
+  SleepSettings sleep;
 
   /// The restitution of contact sweep k (1-based), Eq. (8.5).
   double contactRestitutionAt(int k) const {
@@ -174,6 +181,12 @@ inline void validateStepSettings(const StepSettings& s, const char* caller = "va
     msg << "shock.sweepsPerLevel must be >= 1, got " << s.shock.sweepsPerLevel;
   } else if (s.shock.pairIterations < 1) {
     msg << "shock.pairIterations must be >= 1, got " << s.shock.pairIterations;
+  } else if (s.parallel.threads < 0) {
+    msg << "parallel.threads must be >= 0 (0: all hardware threads), got " << s.parallel.threads;
+  } else if (s.parallel.minPairs < 0) {
+    msg << "parallel.minPairs must be >= 0, got " << s.parallel.minPairs;
+  } else if (s.parallel.bodiesPerTask < 1) {
+    msg << "parallel.bodiesPerTask must be >= 1, got " << s.parallel.bodiesPerTask;
   } else if (!s.shock.restitution.empty() &&
              s.shock.restitution.size() != static_cast<std::size_t>(s.shock.sweepsPerLevel)) {
     msg << "shock.restitution must be empty or hold sweepsPerLevel = " << s.shock.sweepsPerLevel
@@ -196,6 +209,7 @@ inline void validateStepSettings(const StepSettings& s, const char* caller = "va
     throw std::invalid_argument(std::string(caller) + ": settings." + msg.str());
   }
   validateImpulsePointSettings(s.impulsePoint, caller);
+  validateSleepSettings(s.sleep, caller);
 }
 
 }  // namespace stackbook

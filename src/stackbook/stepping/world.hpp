@@ -70,6 +70,11 @@ struct World {
   std::vector<std::shared_ptr<const Shape<D>>> shapes;
   std::vector<Material> materials;
   Vec<D> gravity = Vec<D>::Zero();
+  /// Sleeping (chapter 8, "Sleeping"): per body, how long it has been at rest (s) and
+  /// whether it sleeps. Empty until a step with sleeping on sizes them; a step without
+  /// sleeping ignores them.
+  std::vector<double> restTime;
+  std::vector<char> asleep;
 
   /// Append a body and return its index.
   int addBody(const RigidBody<D>& body, std::shared_ptr<const Shape<D>> shape,

@@ -1,0 +1,83 @@
+#pragma once
+/// \file
+/// \brief The islands of one sweep (chapter 10, "Threads"): the pairs of a sweep grouped
+/// into connected components over the dynamic bodies they touch. An impulse changes only
+/// the velocities of its pair's dynamic bodies and the tested poses of those bodies, so
+/// two pairs of different islands read and write disjoint data and may run at the same
+/// time; within an island the pairs keep the sweep's order.
+
+#include <algorithm>
+#include <algorithm>
+#include <cstddef>
+#include <numeric>
+#include <vector>
+
+#include "stackbook/collision/broad_phase.hpp"
+#include "stackbook/stepping/world.hpp"
+
+namespace stackbook {
+
+// [pair_islands]
+/// The islands of a list of pairs, in compressed form: island c holds the pair indices
+/// pairs[begin[c]] .. pairs[begin[c + 1] - 1], ascending (the sweep's order). Islands are
+/// numbered by their first pair in the list, so the numbering depends only on the list
+/// and on which bodies are static, never on threads.
+struct PairIslands {
+  std::vector<std::size_t> begin;  ///< size islandCount() + 1
+  std::vector<std::size_t> pairs;  ///< pair indices, island by island
+
+  std::size_t islandCount() const { return begin.empty() ? 0 : begin.size() - 1; }
+  std::size_t size(std::size_t c) const { return begin[c + 1] - begin[c]; }
+};
+
+/// Union-find over the dynamic bodies of `pairs` (Eq. (10.8)): two pairs share an island
+/// when a chain of pairs links them through dynamic bodies. A static body (1/m = 0 and
+/// I^{-1} = 0, which includes bodies frozen by shock propagation) joins nothing: impulses
+/// never change it. A pair of two static bodies is an island of its own. O(n + p).
+template <int D>
+PairIslands pairIslands(const World<D>& world, const std::vector<BodyPair>& pairs) {
+  const std::size_t n = world.bodies.size();
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto find = [&parent](int i) {
+    while (parent[static_cast<std::size_t>(i)] != i) {
+      int& p = parent[static_cast<std::size_t>(i)];
+      p = parent[static_cast<std::size_t>(p)];  // path halving
+      i = p;
+    }
+    return i;
+  };
+  const auto dynamic = [&world](int i) { return !world.bodies[static_cast<std::size_t>(i)].isStatic(); };
+  for (const BodyPair& p : pairs) {
+    if (dynamic(p.first) && dynamic(p.second)) {
+      const int a = find(p.first), b = find(p.second);
+      if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+    }
+  }
+  // Island of each pair, numbered in order of first appearance in the list.
+  std::vector<int> islandOfRoot(n, -1);
+  std::vector<std::size_t> islandOfPair(pairs.size());
+  std::size_t islands = 0;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const BodyPair& p = pairs[k];
+    const int body = dynamic(p.first) ? p.first : (dynamic(p.second) ? p.second : -1);
+    if (body < 0) {
+      islandOfPair[k] = islands++;
+      continue;
+    }
+    int& island = islandOfRoot[static_cast<std::size_t>(find(body))];
+    if (island < 0) island = static_cast<int>(islands++);
+    islandOfPair[k] = static_cast<std::size_t>(island);
+  }
+  PairIslands out;
+  out.begin.assign(islands + 1, 0);
+  for (const std::size_t c : islandOfPair) ++out.begin[c + 1];
+  for (std::size_t c = 0; c < islands; ++c) out.begin[c + 1] += out.begin[c];
+  out.pairs.resize(pairs.size());
+  std::vector<std::size_t> next(out.begin.begin(), out.begin.end() - 1);
+  for (std::size_t k = 0; k < pairs.size(); ++k) out.pairs[next[islandOfPair[k]]++] = k;
+  return out;
+}
+// [pair_islands]
+
+}  // namespace stackbook

@@ -1,0 +1,237 @@
+// Chapter 10, "Threads": the islands of a sweep, and the step bit for bit the same for 1, 2
+// and 4 threads on bundled scenes (exact state bits and every work counter after N steps),
+// with GBF's contact stage, with the pass as the contact stage and one cone per step (the
+// contact ledger shared by the islands), with the loop tolerances, the implicit midpoint
+// rotation, exact deepest points, and with sleeping on.
+#include <doctest/doctest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "stackbook/geometry/analytic_sdf.hpp"
+#include "stackbook/scene/scene.hpp"
+#include "stackbook/stacking/shock_propagation.hpp"
+#include "stackbook/stepping/pair_islands.hpp"
+#include "stackbook/stepping/traditional_step.hpp"
+
+using namespace stackbook;
+
+namespace {
+
+std::uint64_t threadsMixDouble(std::uint64_t h, double x) {
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &x, sizeof bits);
+  for (int b = 0; b < 8; ++b) {
+    h ^= (bits >> (8 * b)) & 0xffu;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+/// FNV-1a over the bits of every body's position, orientation, velocity, angular
+/// momentum and angular velocity.
+template <int D>
+std::uint64_t threadsStateHash(const World<D>& world) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (const RigidBody<D>& b : world.bodies) {
+    for (int k = 0; k < D; ++k) h = threadsMixDouble(threadsMixDouble(h, b.position[k]), b.velocity[k]);
+    for (int k = 0; k < b.angularMomentum.size(); ++k) {
+      h = threadsMixDouble(threadsMixDouble(h, b.angularMomentum[k]), b.angularVelocity[k]);
+    }
+    if constexpr (D == 2) {
+      h = threadsMixDouble(h, b.orientation.angle());
+    } else {
+      for (int k = 0; k < 4; ++k) h = threadsMixDouble(h, b.orientation.coeffs()[k]);
+    }
+  }
+  return h;
+}
+
+/// What must agree between thread counts: the state bits and the work counted.
+struct ThreadsOutcome {
+  std::uint64_t hash = 0;
+  std::vector<std::int64_t> counts;
+  std::int64_t islandSweeps = 0;  // sweeps that ran as islands (differs by thread count)
+  std::int64_t fellAsleep = 0;
+  std::int64_t pairConvergences = 0;
+};
+
+void threadsAddStage(std::vector<std::int64_t>& out, const StageCounters& s) {
+  for (const std::int64_t v : {s.sweeps, s.pairVisits, s.impulses, s.frictionless, s.sticking, s.sliding,
+                               s.pairIterationCapHits, s.pairConvergences, s.frictionEvaluations, s.elasticImpulses,
+                               s.rollingImpulses, s.stepConeSticks, s.detection.pairsTested,
+                               s.detection.pairQueries, s.detection.phiQueries,
+                               s.detection.interferenceSamples}) {
+    out.push_back(v);
+  }
+}
+
+template <int D>
+ThreadsOutcome threadsRun(const Scene& scene, StepSettings settings, int steps) {
+  World<D> world = std::get<SceneBodies<D>>(scene.bodies).world;
+  const PostContactHook<D> hook = shockPropagationHook<D>();
+  StepCounters total;
+  for (int n = 0; n < steps; ++n) total += step<D>(world, settings, hook);
+  ThreadsOutcome out;
+  out.hash = threadsStateHash<D>(world);
+  threadsAddStage(out.counts, total.collision);
+  threadsAddStage(out.counts, total.contact);
+  threadsAddStage(out.counts, total.shock);
+  out.counts.push_back(total.sleep.sleepingBodySteps);
+  out.counts.push_back(total.sleep.fellAsleep);
+  out.fellAsleep = total.sleep.fellAsleep;
+  out.pairConvergences = total.collision.pairConvergences + total.contact.pairConvergences + total.shock.pairConvergences;
+  out.islandSweeps = total.collision.islandSweeps + total.contact.islandSweeps + total.shock.islandSweeps;
+  return out;
+}
+
+ThreadsOutcome threadsRunScene(const Scene& scene, const StepSettings& settings, int steps) {
+  return scene.dimension == 2 ? threadsRun<2>(scene, settings, steps) : threadsRun<3>(scene, settings, steps);
+}
+
+/// Runs `steps` steps of the bundled scene `name` with 1, 2 and 4 threads (islands split
+/// from two pairs on) and checks that the states and counters are identical, and that the
+/// runs with several threads did split sweeps into islands.
+/// `adjust` sets what no scene field reaches (chapter 8's loop tolerances). Returns the
+/// one-thread outcome.
+ThreadsOutcome checkThreadCounts(const std::string& name, int steps, const std::vector<std::string>& overrides = {},
+                                 const std::function<void(StepSettings&)>& adjust = {}) {
+  CAPTURE(name);
+  const Scene scene = loadScene(std::string(STACKBOOK_SCENES_DIR) + "/" + name + ".json", overrides);
+  StepSettings settings = scene.settings;
+  if (adjust) adjust(settings);
+  settings.parallel.minPairs = 2;
+  settings.parallel.bodiesPerTask = 1;  // the per-body loops split too
+  settings.parallel.threads = 1;
+  const ThreadsOutcome one = threadsRunScene(scene, settings, steps);
+  CHECK(one.islandSweeps == 0);
+  for (const int threads : {2, 4}) {
+    CAPTURE(threads);
+    settings.parallel.threads = threads;
+    const ThreadsOutcome many = threadsRunScene(scene, settings, steps);
+    CHECK(many.hash == one.hash);
+    CHECK(many.counts == one.counts);
+    CHECK(many.islandSweeps > 0);
+  }
+  return one;
+}
+
+}  // namespace
+
+TEST_SUITE(STACKBOOK_CHAPTER) {
+
+TEST_CASE("The islands of a sweep join pairs through dynamic bodies only, in the sweep's order") {
+  World<2> world;
+  const auto shape = std::make_shared<BoxShape<2>>(makeBoxShape<2>(Vec2(1.0, 1.0)));
+  world.addBody(makeStaticBody<2>(Vec2(0.0, 0.0)), shape);  // 0: static ground
+  for (int i = 1; i <= 5; ++i) world.addBody(makeDynamicBody<2>(1.0, AngVec<2>::Constant(1.0)), shape);
+  // Pairs in sweep order: 0-1, 0-3, 1-2, 4-5, 0-2, 3-4.
+  const std::vector<BodyPair> pairs{{0, 1}, {0, 3}, {1, 2}, {4, 5}, {0, 2}, {3, 4}};
+  const PairIslands islands = pairIslands<2>(world, pairs);
+  // Through the static ground nothing joins: {1, 2} holds pairs 0, 2, 4; {3, 4, 5} pairs 1, 3, 5.
+  REQUIRE(islands.islandCount() == 2);
+  CHECK(std::vector<std::size_t>(islands.pairs.begin(), islands.pairs.begin() + 3) ==
+        std::vector<std::size_t>{0, 2, 4});
+  CHECK(std::vector<std::size_t>(islands.pairs.begin() + 3, islands.pairs.end()) ==
+        std::vector<std::size_t>{1, 3, 5});
+  // A body made static (as shock propagation freezes a level) splits its island.
+  world.bodies[4].inverseMass = 0.0;
+  world.bodies[4].inverseInertia.setZero();
+  const PairIslands split = pairIslands<2>(world, pairs);
+  CHECK(split.islandCount() == 3);  // {1, 2}: pairs 0, 2, 4; {3}: pairs 1, 5; {5}: pair 3
+  CHECK(split.size(0) == 3);
+  CHECK(split.size(1) == 2);
+  CHECK(split.size(2) == 1);
+  CHECK(split.pairs[3] == 1);
+  CHECK(split.pairs[4] == 5);
+  CHECK(split.pairs[5] == 3);
+}
+
+TEST_CASE("A step is bit for bit the same for 1, 2 and 4 threads: many islands (2D)") {
+  checkThreadCounts("many_pyramids_2d", 40);
+  checkThreadCounts("bouncing_balls_2d", 2500);  // the balls reach the floor after about 1 s
+}
+
+TEST_CASE("A step is bit for bit the same for 1, 2 and 4 threads: nonconvex shapes (2D and 3D)") {
+  checkThreadCounts("shapes_in_bin_2d", 300);
+  checkThreadCounts("rings_on_pegs_3d", 300);
+}
+
+TEST_CASE("A step is bit for bit the same for 1, 2 and 4 threads: the pass as the contact stage, "
+          "one cone per step") {
+  checkThreadCounts("many_pyramids_2d", 30,
+                    {"solver.shock.replacesContactStage=true", "solver.shock.sweepsPerLevel=6",
+                     "solver.frictionCone=\"step\""});
+  checkThreadCounts("pyramid_3d", 15, {"solver.frictionCone=\"step\""});
+}
+
+TEST_CASE("A step is bit for bit the same for 1, 2 and 4 threads: the loop tolerances, the implicit "
+          "midpoint rotation, exact deepest points, sleeping") {
+  // The loop tolerances read the largest approach speed of a sweep, which every island
+  // raises; the pair tolerance must have ended some pair loops for the check to mean anything.
+  const ThreadsOutcome tolerant =
+      checkThreadCounts("many_pyramids_2d", 30, {"solver.rotation=\"implicitMidpoint\""}, [](StepSettings& s) {
+        s.pairImpulseTolerance = 0.05;
+        s.stageApproachTolerance = 1e-4;
+        s.shock.pairImpulseTolerance = 0.05;
+        s.shock.levelApproachTolerance = 1e-4;
+      });
+  CHECK(tolerant.pairConvergences > 0);
+  checkThreadCounts("bouncing_balls_2d", 2500, {"solver.surfaceQuery=\"deepestPoint\""});
+  // Four resting pyramids fall asleep after 0.02 s at rest; the sleepers are static to the
+  // islands of the later sweeps.
+  const ThreadsOutcome sleeping =
+      checkThreadCounts("many_pyramids_2d", 60, {"solver.sleep.enabled=true", "solver.sleep.time=0.02"});
+  CHECK(sleeping.fellAsleep > 0);
+}
+
+TEST_CASE("The scene fields solver.threads and solver.sleep reach the step settings, bad values get one line") {
+  const std::string file = std::string(STACKBOOK_SCENES_DIR) + "/box_stack_2d.json";
+  const Scene scene = loadScene(file, {"solver.threads=3", "solver.sleep.enabled=true", "solver.sleep.time=0.25",
+                                       "solver.sleep.linearSpeed=0.01", "solver.sleep.angularSpeed=0.02",
+                                       "solver.sleep.wakeMargin=0.1"});
+  CHECK(scene.settings.parallel.threads == 3);
+  CHECK(scene.settings.sleep.enabled);
+  CHECK(scene.settings.sleep.time == 0.25);
+  CHECK(scene.settings.sleep.linearSpeed == 0.01);
+  CHECK(scene.settings.sleep.angularSpeed == 0.02);
+  CHECK(scene.settings.sleep.wakeMargin == 0.1);
+  const Scene plain = loadScene(file);
+  CHECK(plain.settings.parallel.threads == 0);  // every hardware thread
+  CHECK_FALSE(plain.settings.sleep.enabled);
+  CHECK_THROWS_WITH_AS(loadScene(file, {"solver.threads=-1"}), doctest::Contains("/solver/threads: must be an integer in [0, 1024], got -1"),
+                       SceneError);
+  CHECK_THROWS_WITH_AS(loadScene(file, {"solver.sleep.time=-2"}), doctest::Contains("/solver/sleep/time: must be >= 0"),
+                       SceneError);
+  CHECK_THROWS_WITH_AS(loadScene(file, {"solver.sleep.sleepy=1"}), doctest::Contains("/solver/sleep/sleepy"),
+                       SceneError);
+}
+
+TEST_CASE("A contact recorder receives the same impulses in the same order for 1 and 2 threads") {
+  const Scene scene = loadScene(std::string(STACKBOOK_SCENES_DIR) + "/many_pyramids_2d.json");
+  std::vector<ContactRecord> records[2];
+  for (const int threads : {1, 2}) {
+    ContactRecorder recorder;
+    StepSettings settings = scene.settings;
+    settings.parallel.threads = threads;
+    settings.parallel.minPairs = 2;
+    settings.contactRecorder = &recorder;
+    threadsRun<2>(scene, settings, 10);
+    records[threads - 1] = recorder.records();
+  }
+  REQUIRE(records[0].size() > 100);
+  REQUIRE(records[1].size() == records[0].size());
+  bool same = true;
+  for (std::size_t k = 0; k < records[0].size(); ++k) {
+    const ContactRecord& a = records[0][k];
+    const ContactRecord& b = records[1][k];
+    same = same && a.stage == b.stage && a.owner == b.owner && a.other == b.other && a.point == b.point &&
+           a.normal == b.normal && a.impulse == b.impulse;
+  }
+  CHECK(same);
+}
+
+}  // TEST_SUITE
