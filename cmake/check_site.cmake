@@ -10,7 +10,9 @@
 # 3. Every chapter page (chNN.html) has its previous/next links at the top and the bottom,
 #    and, with REQUIRE_FIGURES, at least two SVG figures (<img>, <object> or <iframe>).
 # 4. No validation-case code (A2, B15, A2b) in a chapter's prose without its link: codes
-#    inside links, code spans, listings and formulas are fine.
+#    inside links, code spans, listings and formulas are fine. The same rule on the Markdown
+#    sources (chapters/, docs/appendices/): a code is written [A2b](@ref case_A2b), and the
+#    entry it links exists in docs/validation_catalogue.md.
 # 5. Every `ctest --preset P ... -L X` or `-R X` command in the chapters, the docs pages and
 #    the README selects at least one test (`ctest --preset P -N`, run from ROOT; exercise
 #    entries, which only the exercises preset registers, are matched against the stubs).
@@ -176,8 +178,45 @@ foreach(page IN LISTS chapter_pages appendix_pages)
   endforeach()
 endforeach()
 
+# --- 4b. case codes in the Markdown sources ----------------------------------------------
+# The same rule on the sources of the chapters and their appendix pages, so that the raw
+# Markdown and the built site agree: a case code is written as a link to its catalogue
+# entry, [A2b](@ref case_A2b) (or [B5a](@ref case_B5) for a variant of a case), and the
+# entry exists. Formulas, listings and page or section ids are not prose.
+file(READ "${ROOT}/docs/validation_catalogue.md" catalogue)
+string(REGEX MATCHALL "\\{#case_[A-Za-z0-9]+\\}" catalogue_ids "${catalogue}")
+file(GLOB case_sources "${ROOT}/chapters/*.md" "${ROOT}/docs/appendices/*.md")
+list(SORT case_sources)
+foreach(source IN LISTS case_sources)
+  file(RELATIVE_PATH shown "${ROOT}" "${source}")
+  file(READ "${source}" text)
+  string(REGEX MATCHALL "\\[[^]\n]*\\]\\(@ref case_[A-Za-z0-9]+\\)" case_links "${text}")
+  list(REMOVE_DUPLICATES case_links)
+  foreach(link IN LISTS case_links)
+    string(REGEX REPLACE "^\\[([^]]*)\\]\\(@ref case_([A-Za-z0-9]+)\\)$" "\\1;\\2" parts "${link}")
+    list(GET parts 0 link_text)
+    list(GET parts 1 link_case)
+    list(FIND catalogue_ids "{#case_${link_case}}" known)
+    if(known EQUAL -1)
+      problem("${shown}: ${link} links to no entry of docs/validation_catalogue.md")
+    elseif(NOT link_text MATCHES "^${link_case}[a-z]?$")
+      problem("${shown}: ${link}: the link text is not the code of the case it links")
+    endif()
+  endforeach()
+  string(REGEX REPLACE "\\[[^]\n]*\\]\\(@ref case_[A-Za-z0-9]+\\)" " " text "${text}")
+  string(REGEX REPLACE "\\\\f\\$[^$]*\\\\f\\$" " " text "${text}")
+  string(REGEX REPLACE "\\\\f\\[[^]]*\\\\f\\]" " " text "${text}")
+  string(REGEX REPLACE "\\{#[^}]*\\}" " " text "${text}")
+  string(REGEX REPLACE "\n[ \t]*\\\\(snippet|include|verbinclude|image|dotfile)[^\n]*" "\n" text "${text}")
+  string(REGEX MATCHALL "[^A-Za-z0-9_#./[-][AB][0-9][0-9]?[a-z]?[^A-Za-z0-9_]" codes " ${text} ")
+  foreach(code IN LISTS codes)
+    string(REGEX MATCH "[AB][0-9]+[a-z]?" code "${code}")
+    problem("${shown}: validation case ${code} without a link to its catalogue entry (write [${code}](@ref case_${code}))")
+  endforeach()
+endforeach()
+
 # --- 5. ctest commands shown to the reader -----------------------------------------------
-file(GLOB text_sources "${ROOT}/chapters/*.md" "${ROOT}/docs/*.md")
+file(GLOB text_sources "${ROOT}/chapters/*.md" "${ROOT}/docs/*.md" "${ROOT}/docs/appendices/*.md")
 list(APPEND text_sources "${ROOT}/README.md")
 set(checked "")
 foreach(source IN LISTS text_sources)

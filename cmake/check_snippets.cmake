@@ -1,14 +1,15 @@
 # cmake -DROOT=<repo> -P cmake/check_snippets.cmake
 #
 # The literate rule: every code listing in the course is a \snippet of compiled code.
-# This check needs no Doxygen. For every "\snippet <file> <tag>" in chapters/*.md and
-# docs/*.md it fails when <file> does not exist, is not under src/ or tests/, or when
+# This check needs no Doxygen. For every "\snippet <file> <tag>" in chapters/*.md,
+# docs/*.md and docs/appendices/*.md (the chapters' appendix pages) it fails when <file>
+# does not exist, is not under src/ or tests/, or when
 # "[<tag>]" does not occur exactly twice in it (Doxygen takes the lines between the
 # first two occurrences). It also fails on fenced C++ blocks pasted into a page.
 if(NOT ROOT)
   message(FATAL_ERROR "usage: cmake -DROOT=<repo> -P check_snippets.cmake")
 endif()
-file(GLOB pages "${ROOT}/chapters/*.md" "${ROOT}/docs/*.md")
+file(GLOB pages "${ROOT}/chapters/*.md" "${ROOT}/docs/*.md" "${ROOT}/docs/appendices/*.md")
 set(errors "")
 set(count 0)
 foreach(page IN LISTS pages)
