@@ -55,11 +55,11 @@ void leverArm(const Setup& s) {
   svg.arrow(v, 0, 0, r.x(), r.y(), "#777", 1.5, "5 3");
   svg.text(v, 0.5 * r.x(), 0.5 * r.y(), "r", "start", 4, 18, "#555", 15, true);
   svg.arrow(v, s.corner.x(), s.corner.y(), s.corner.x() + j.x(), s.corner.y() + j.y(), "#1b7837", 3);
-  svg.text(v, s.corner.x() + j.x(), s.corner.y() + j.y(), "impulse j", "end", -8, 0, "#1b7837");
+  svg.text(v, s.corner.x() + j.x(), s.corner.y() + j.y(), "impulse j", "start", 14, 8, "#1b7837");
   svg.arrow(v, 0, 0, dv.x(), dv.y(), "#2166ac", 3);
-  svg.text(v, dv.x(), dv.y(), "Δv = j/m", "middle", 0, -10, "#2166ac");
+  svg.text(v, dv.x(), dv.y(), "Δv = j/m", "start", 8, 10, "#2166ac");
   svg.arrow(v, s.corner.x(), s.corner.y(), s.corner.x() + du.x(), s.corner.y() + du.y(), "#b2182b", 3);
-  svg.text(v, s.corner.x() + du.x(), s.corner.y() + du.y(), "Δu = K j at the corner", "start", 8, 4,
+  svg.text(v, s.corner.x() + du.x(), s.corner.y() + du.y(), "Δu = K j at the corner", "end", -12, 6,
            "#b2182b");
   // The spin the lever arm adds: an arc about the centre, in the sense of dw.
   Points arc;
@@ -70,7 +70,8 @@ void leverArm(const Setup& s) {
   svg.polyline(v, arc, stroke("#2166ac", 2));
   const auto& tip = arc.back();
   svg.arrow(v, arc[arc.size() - 5].first, arc[arc.size() - 5].second, tip.first, tip.second, "#2166ac", 2);
-  svg.text(v, -0.3, -0.3, "Δω = r × j / I = " + fmt(dw, 3), "end", -6, 10, "#2166ac");
+  // Below the box, clear of its outline: the box's lowest corner is at y = -0.81.
+  svg.text(v, -0.2, -1.05, "spin Δω = r × j / I = " + fmt(dw, 3) + " (blue arc)", "middle", 0, 0, "#2166ac");
   svg.text(v, s.corner.x(), s.corner.y(), "p", "start", 6, 14, "#222", 15, true);
   svg.save("ch01_lever_arm.svg");
   std::cout << "ch01_lever_arm.svg: |K j| = " << du.norm() << ", |j/m| = " << dv.norm() << "\n";
@@ -81,7 +82,7 @@ void kEllipse(const Setup& s) {
   const Mat2 K = pairCollisionMatrix<2>(s.box, r, s.ground, Vec2::Zero());
   const Eigen::SelfAdjointEigenSolver<Mat2> eigen(K);
 
-  Svg svg(460, 480, "The collision matrix K maps unit impulses to an ellipse of velocity changes");
+  Svg svg(740, 480, "The collision matrix K maps unit impulses to an ellipse of velocity changes");
   const double range = 1.15 * std::max(1.0, eigen.eigenvalues()[1]);
   const View v = View::equal(70, 20, 370, 400, -0.75 * range, 0.75 * range, -range, range);
   svg.axes(v, "x component", "y component", 6, 6);
@@ -95,12 +96,11 @@ void kEllipse(const Setup& s) {
   }
   svg.polyline(v, circle, stroke("#1b7837", 1.5, "5 3"));
   svg.polyline(v, ellipse, stroke("#b2182b", 2.5));
-  const char* names[2] = {"smallest: 1/m, along r", "largest"};
+  // The axes of the ellipse: each eigenvector scaled by its eigenvalue, named in the key.
   for (int i = 0; i < 2; ++i) {
     const Vec2 e = eigen.eigenvectors().col(i) * eigen.eigenvalues()[i];
     svg.arrow(v, 0, 0, e.x(), e.y(), "#444", 1.8);
-    svg.text(v, e.x(), e.y(), std::string(names[i]) + " eigenvalue " + fmt(eigen.eigenvalues()[i], 3),
-             "start", 8, i == 0 ? 18 : 4, "#444", 12);
+    svg.text(v, e.x(), e.y(), i == 0 ? "a" : "b", "end", -6, i == 0 ? -6 : 14, "#444", 13, true);
   }
   // One unit impulse and its image: K turns it away from itself.
   const Vec2 j(0.0, 1.0);
@@ -109,8 +109,13 @@ void kEllipse(const Setup& s) {
   svg.text(v, j.x(), j.y(), "j = (0, 1)", "start", 6, -4, "#1b7837");
   svg.arrow(v, 0, 0, u.x(), u.y(), "#b2182b", 2.5);
   svg.text(v, u.x(), u.y(), "K j", "start", 6, -2, "#b2182b");
-  svg.legend(110, 250, {{stroke("#1b7837", 1.5, "5 3"), "unit impulses j"},
-                      {stroke("#b2182b", 2.5), "velocity changes K j"}});
+  svg.legend(462, 24, {{stroke("#1b7837", 1.5, "5 3"), "unit impulses j"},
+                      {stroke("#b2182b", 2.5), "velocity changes K j"},
+                      {stroke("#444", 1.8), "axes a, b: eigenvectors of K"}});
+  svg.textPixels(470, 116, "a: eigenvalue " + fmt(eigen.eigenvalues()[0], 3) + " = 1/m, along r", "start",
+                 "#444", 12);
+  svg.textPixels(470, 136, "b: eigenvalue " + fmt(eigen.eigenvalues()[1], 3) + ", across r", "start",
+                 "#444", 12);
   svg.save("ch01_k_ellipse.svg");
   std::cout << "ch01_k_ellipse.svg: eigenvalues " << eigen.eigenvalues().transpose() << "\n";
 }

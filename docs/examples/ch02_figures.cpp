@@ -95,14 +95,14 @@ void beforeAfter() {
   }
   drawBodies(svg, right, at.box, at.disk, 1.0, true);
   svg.arrow(right, at.p.x(), at.p.y(), at.p.x() + 0.35 * jn / 2.0, at.p.y(), "#1b7837", 3);
-  svg.text(right, at.p.x(), at.p.y(), "j on the box", "start", 4, -10, "#1b7837", 12);
+  svg.text(right, at.p.x(), at.p.y(), "j on the box", "start", 4, -28, "#1b7837", 12);
   svg.arrow(right, at.box.position.x(), at.box.position.y(),
             at.box.position.x() + 0.4 * at.box.velocity.x(), at.box.position.y(), "#2166ac", 2.5);
   svg.arrow(right, at.disk.position.x(), at.disk.position.y(),
             at.disk.position.x() + 0.4 * at.disk.velocity.x(), at.disk.position.y(), "#b2182b", 2.5);
   svg.text(right, at.box.position.x(), at.box.position.y(),
            "v = " + fmt(at.box.velocity.x(), 3) + ", ω = " + fmt(at.box.angularVelocity[0], 3),
-           "middle", 0, 40, "#2166ac", 12);
+           "middle", 0, 78, "#2166ac", 12);
   svg.text(right, at.disk.position.x(), at.disk.position.y(), "v = " + fmt(at.disk.velocity.x(), 3),
            "middle", 0, 40, "#b2182b", 12);
   svg.save("ch02_off_centre_impact.svg");
@@ -122,13 +122,14 @@ void restitutionSweep() {
     speed.emplace_back(e, un / -unBefore);
     energy.emplace_back(e, (s.box.kineticEnergy() + s.disk.kineticEnergy()) / keBefore);
   }
-  Svg svg(600, 380, "Normal velocity and kinetic energy after the impact against the restitution e");
+  Svg svg(600, 440, "Normal velocity and kinetic energy after the impact against the restitution e");
   const View v{80, 20, 490, 300, -0.5, 1.0, -0.6, 1.05};
   svg.axes(v, "restitution e", "after the impact", 6, 8);
   svg.line(v, -0.5, 0, 1, 0, stroke("#888", 1));
   svg.polyline(v, speed, stroke("#b2182b", 2.5));
   svg.polyline(v, energy, stroke("#2166ac", 2.5));
-  svg.legend(90, 28, {{stroke("#b2182b", 2.5), "normal velocity u_n' / |u_n|  (= e)"},
+  // The key below the plot, where it covers no curve.
+  svg.legend(90, 370, {{stroke("#b2182b", 2.5), "normal velocity u_n' / |u_n|  (= e)"},
                         {stroke("#2166ac", 2.5), "kinetic energy after / before"}});
   svg.save("ch02_restitution_sweep.svg");
   std::cout << "ch02_restitution_sweep.svg: energy kept at e = 0: " << energy[20].second << "\n";

@@ -1,6 +1,7 @@
 // Chapter 8: GBF's order against the traditional order on validation case A1 (a unit
 // box at rest on a 20 degree incline, mu = 0.5, e = 1), the A2 slide error at two step
-// sizes, and what the step costs, stage by stage. Printed as Markdown for the course page
+// sizes and the A2b stick/slide switch under both slip-direction rules of chapter 3, and
+// what the step costs, stage by stage. Printed as Markdown for the course page
 // (\include{doc} ch08_step_orders.out). Wall times vary from run to run; counts do not.
 #include <algorithm>
 #include <cmath>
@@ -48,6 +49,26 @@ void slideErrors(SlipDirectionRule rule, const char* name) {
   }
 }
 
+/// A2b: with mu = 0.5 the friction angle is atan(0.5) = 26.57 degrees; a box at rest at 26
+/// degrees must stay, at 27 it must slide with a = g (sin - mu cos). The switch is where the
+/// two slip-direction rules differ most in 3D (chapter 3, continuity).
+template <int D>
+void switchRow(SlipDirectionRule rule, const char* name, double degrees) {
+  const double theta = degrees * M_PI / 180.0, mu = 0.5;
+  const double exact = std::max(0.0, 0.5 * kG * (std::sin(theta) - mu * std::cos(theta)));
+  testing::InclineScene<D> scene = testing::makeIncline<D>(theta, mu, 0.0);
+  StepSettings settings;
+  settings.friction.slipDirection = rule;
+  const long steps = std::lround(1.0 / settings.dt);
+  double maxLift = 0.0;
+  for (long n = 0; n < steps; ++n) {
+    step<D>(scene.world, settings);
+    maxLift = std::max(maxLift, std::abs(scene.lift()));
+  }
+  std::printf("| %dD | %s | %g | %.3e | %.3e | %.3e |\n", D, name, degrees, scene.travelled(), exact,
+              maxLift);
+}
+
 void costs(const std::vector<double>& schedule, const char* name) {
   testing::InclineScene<3> scene = testing::makeIncline<3>(20.0 * M_PI / 180.0, 0.5, 1.0);
   StepSettings settings;
@@ -78,6 +99,15 @@ int main() {
   slideErrors<2>(SlipDirectionRule::RelativeVelocity, "GBF (u_t)");
   slideErrors<3>(SlipDirectionRule::RelativeVelocity, "GBF (u_t)");
   slideErrors<3>(SlipDirectionRule::Blended, "Blended (chapter 3)");
+  std::printf("\n\\ref case_A2b \"A2b\", either side of the friction angle (mu = 0.5, 1 s at the default "
+              "step), under both rules:\n\n"
+              "| dimension | slip direction | incline (degrees) | s(1 s) (m) | a/2 (m) | largest lift (m) |\n"
+              "|---|---|---|---|---|---|\n");
+  for (const double degrees : {26.0, 27.0}) {
+    switchRow<2>(SlipDirectionRule::RelativeVelocity, "GBF (u_t)", degrees);
+    switchRow<3>(SlipDirectionRule::RelativeVelocity, "GBF (u_t)", degrees);
+    switchRow<3>(SlipDirectionRule::Blended, "Blended (chapter 3)", degrees);
+  }
   std::printf("\n\\ref case_A1 \"A1\" in 3D, 1000 steps of GBF's order (unit box: 98 surface samples), with GBF's "
               "ramp e_k = -1 + k/10 and with e_k = 0 in all ten sweeps:\n\n"
               "| schedule | stage | sweeps | impulses | frictionless | sticking | sliding | "

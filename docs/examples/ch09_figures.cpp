@@ -39,9 +39,16 @@ void scenePicture(const World<2>& world, const ContactLevels& levels) {
     }
     const int level = levels.levelOfBody[static_cast<std::size_t>(b)];
     svg.polygon(v, corners, filled(levelColour(level), "#333", 1.2));
-    const double labelY = b == 0 ? -0.12 : body.position.y();
-    svg.text(v, body.position.x(), labelY,
-             "body " + std::to_string(b) + ", level " + std::to_string(level), "middle", 0, 5, "#111", 12);
+    // The ground and the plank are wide: one line. A box is narrower than "body 1, level 1":
+    // its body and its level on two lines.
+    const std::string body_name = "body " + std::to_string(b), level_name = "level " + std::to_string(level);
+    if (b == 0 || box.upper.x() - box.lower.x() > 1.0) {
+      const double labelY = b == 0 ? -0.12 : body.position.y();
+      svg.text(v, body.position.x(), labelY, body_name + ", " + level_name, "middle", 0, 5, "#111", 12);
+    } else {
+      svg.text(v, body.position.x(), body.position.y(), body_name, "middle", 0, -2, "#111", 12);
+      svg.text(v, body.position.x(), body.position.y(), level_name, "middle", 0, 12, "#111", 12);
+    }
   }
   svg.save("ch09_plank_levels.svg");
 }

@@ -164,6 +164,8 @@ class Svg {
     body_ += "<text x=\"" + fmt(px) + "\" y=\"" + fmt(py) + "\" font-size=\"" +
              std::to_string(size) + "\" text-anchor=\"" + anchor + "\" fill=\"" + colour + "\"" +
              (italic ? " font-style=\"italic\"" : "") +
+             // A white halo under the letters keeps a label legible where it crosses a line.
+             " stroke=\"white\" stroke-width=\"3\" stroke-linejoin=\"round\" paint-order=\"stroke\"" +
              (rotate != 0.0 ? " transform=\"rotate(" + fmt(rotate) + " " + fmt(px) + " " +
                                   fmt(py) + ")\""
                             : "") +
