@@ -65,8 +65,10 @@ void switchRow(SlipDirectionRule rule, const char* name, double degrees) {
     step<D>(scene.world, settings);
     maxLift = std::max(maxLift, std::abs(scene.lift()));
   }
-  std::printf("| %dD | %s | %g | %.3e | %.3e | %.3e |\n", D, name, degrees, scene.travelled(), exact,
-              maxLift);
+  char error[32] = "(stays)";
+  if (exact > 0.0) std::snprintf(error, sizeof error, "%+.3f %%", 100.0 * (scene.travelled() - exact) / exact);
+  std::printf("| %dD | %s | %g | %.3e | %.3e | %s | %.3e |\n", D, name, degrees, scene.travelled(), exact,
+              error, maxLift);
 }
 
 void costs(const std::vector<double>& schedule, const char* name) {
@@ -101,8 +103,8 @@ int main() {
   slideErrors<3>(SlipDirectionRule::Blended, "Blended (chapter 3)");
   std::printf("\n\\ref case_A2b \"A2b\", either side of the friction angle (mu = 0.5, 1 s at the default "
               "step), under both rules:\n\n"
-              "| dimension | slip direction | incline (degrees) | s(1 s) (m) | a/2 (m) | largest lift (m) |\n"
-              "|---|---|---|---|---|---|\n");
+              "| dimension | slip direction | incline (degrees) | s(1 s) (m) | a/2 (m) | error | largest lift (m) |\n"
+              "|---|---|---|---|---|---|---|\n");
   for (const double degrees : {26.0, 27.0}) {
     switchRow<2>(SlipDirectionRule::RelativeVelocity, "GBF (u_t)", degrees);
     switchRow<3>(SlipDirectionRule::RelativeVelocity, "GBF (u_t)", degrees);
