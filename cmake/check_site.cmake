@@ -7,8 +7,10 @@
 #    #anchor to an id or name in that file.
 # 2. No page shows raw TeX (\f$, \f[, \_form#), unprocessed Doxygen commands (\ref, \snippet,
 #    \include, \anchor) or Doxygen's warning text.
-# 3. Every chapter page (chNN.html) has its previous/next links at the top and the bottom,
-#    and, with REQUIRE_FIGURES, at least two SVG figures (<img>, <object> or <iframe>).
+# 3. Every chapter page (chNN.html) has its previous/next links at the top and the bottom
+#    (to the chapter before and after it: index.html before the first, closing.html after
+#    the last), a "Run this now" section (id chNN_run_now), and, with REQUIRE_FIGURES, at
+#    least two SVG figures (<img>, <object> or <iframe>).
 # 4. No validation-case code (A2, B15, A2b) in a chapter's prose without its link: codes
 #    inside links, code spans, listings and formulas are fine. The same rule on the Markdown
 #    sources (chapters/, docs/appendices/): a code is written [A2b](@ref case_A2b), and the
@@ -147,6 +149,38 @@ foreach(page IN LISTS chapter_pages appendix_pages)
   list(LENGTH navs nav_count)
   if(nav_count LESS 2)
     problem("${page}: previous/next links at the top and the bottom expected, found ${nav_count}")
+  endif()
+  # A chapter's links go to the chapter before it and the one after it (the course map,
+  # index.html, before the first; the closing page after the last), at the top and the bottom.
+  list(FIND chapter_pages "${page}" chapter_index)
+  if(NOT chapter_index EQUAL -1)
+    list(LENGTH chapter_pages chapter_count)
+    math(EXPR before_index "${chapter_index} - 1")
+    math(EXPR after_index "${chapter_index} + 1")
+    if(before_index LESS 0)
+      set(expected_before "index.html")
+    else()
+      list(GET chapter_pages ${before_index} expected_before)
+    endif()
+    if(after_index EQUAL chapter_count)
+      set(expected_after "closing.html")
+    else()
+      list(GET chapter_pages ${after_index} expected_after)
+    endif()
+    # Every chapter ends with something the reader runs: its "Run this now" section.
+    string(REGEX REPLACE "\\.html$" "" chapter_id "${page}")
+    if(NOT html MATCHES "id=\"${chapter_id}_run_now\"")
+      problem("${page}: no \"Run this now\" section (## Run this now {#${chapter_id}_run_now})")
+    endif()
+    string(REGEX MATCHALL "<div class=\"chapter_nav\">[^\n]*</div>" nav_blocks "${html}")
+    foreach(nav IN LISTS nav_blocks)
+      foreach(expected IN ITEMS "${expected_before}" "${expected_after}")
+        string(FIND "${nav}" "href=\"${expected}" found)
+        if(found EQUAL -1)
+          problem("${page}: a previous/next bar without its link to ${expected}")
+        endif()
+      endforeach()
+    endforeach()
   endif()
   # <img>/<object>: \image html and the htmlonly figures; <iframe>: \dotfile (Graphviz).
   string(REGEX MATCHALL "<(img|object|iframe)[^>]*\\.svg" figures "${html}")
