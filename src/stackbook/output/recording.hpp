@@ -81,7 +81,7 @@ class Recording {
       throw std::invalid_argument("Recording::record: the world has " +
                                   std::to_string(world.bodies.size()) + " bodies but the recording " +
                                   std::to_string(visuals_.size()) + " visuals");
-    }
+    }  // [record_frame]
     std::vector<Pose<D>> frame;
     std::vector<Vec<D>> v;
     std::vector<AngVec<D>> omega;
@@ -95,7 +95,7 @@ class Recording {
     velocities_.back() = std::move(v);
     angularVelocities_.back() = std::move(omega);
     energies_.back() = frameEnergy<D>(world);
-  }
+  }  // [record_frame]
 
   /// Append a frame at time t from the poses themselves (one per visual, in order): for
   /// recordings that do not come from a World, such as the output writers' tests.
