@@ -6,7 +6,8 @@
 # 1. Every relative link (href, src) of every page resolves to a file of the site, and its
 #    #anchor to an id or name in that file.
 # 2. No page shows raw TeX (\f$, \f[, \_form#), unprocessed Doxygen commands (\ref, \snippet,
-#    \include, \anchor) or Doxygen's warning text.
+#    \include, \anchor), Markdown bold that did not render (a literal **, as when a formula
+#    or a \ref sits inside **...**: write <b>...</b> there) or Doxygen's warning text.
 # 3. Every chapter page (chNN.html) has its previous/next links at the top and the bottom
 #    (to the chapter before and after it: index.html before the first, closing.html after
 #    the last), a "Run this now" section (id chNN_run_now), and, with REQUIRE_FIGURES, at
@@ -123,7 +124,8 @@ foreach(page IN LISTS pages)
   strip_fragments("${html}" prose)
   string(REGEX REPLACE "<code>[^<]*</code>" " " prose "${prose}")
   foreach(pattern "\\\\f\\$" "\\\\f\\[" "\\\\f\\]" "_form#[0-9]" "[^a-z]\\\\ref [a-z]" "\\\\snippet "
-                  "\\\\include(\\{doc\\})? " "\\\\anchor " "warning: " "unable to resolve reference")
+                  "\\\\include(\\{doc\\})? " "\\\\anchor " "warning: " "unable to resolve reference"
+                  "[ >(]\\*\\*[A-Za-z<]")
     if(prose MATCHES "${pattern}")
       string(REGEX MATCH ".{0,40}${pattern}.{0,40}" context "${prose}")
       string(REPLACE "\n" " " context "${context}")

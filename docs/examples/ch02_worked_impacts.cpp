@@ -61,7 +61,7 @@ void offCentreImpact() {
   applyPairImpulse<2>(s.box, s.ra(), s.disk, s.rb(), impulse.j);
   const Vec2 uAfter = relativeVelocity<2>(s.box, s.ra(), s.disk, s.rb());
 
-  header("**Case \\ref case_A7 \"A7\", an off-centre elastic impact (e = 1).** Body a is the box, body b the disk, "
+  header("<b>Case \\ref case_A7 \"A7\", an off-centre elastic impact (e = 1).</b> Body a is the box, body b the disk, "
          "<b>n</b> = (1, 0).");
   row("(<b>r</b><sub>a</sub> × <b>n</b>)<sub>z</sub>", "-3/10", -0.3, cross<2>(s.ra(), s.n)[0]);
   row("u<sub>n</sub>", "-2", -2.0, u.dot(s.n));
@@ -105,7 +105,7 @@ void headOn(double m1, double m2, double v1, double e, const char* title, const 
 }
 
 void restitutionSweep() {
-  std::printf("**The \\ref case_A7 \"A7\" impact for several e.** ΔKE is measured from the bodies; the fifth "
+  std::printf("<b>The \\ref case_A7 \"A7\" impact for several e.</b> ΔKE is measured from the bodies; the fifth "
               "column divides it by the kinetic energy of the normal approach, "
               "½ u<sub>n</sub><sup>2</sup>/(<b>n</b><sup>T</sup><b>K</b><sub>T</sub><b>n</b>), "
               "which Eq. (2.7) predicts to be −(1 − e<sup>2</sup>).\n\n");
@@ -132,9 +132,9 @@ void restitutionSweep() {
 
 int main() {
   offCentreImpact();
-  headOn(1.0, 3.0, 4.0, 0.5, "**Case \\ref case_A6 \"A6\", head-on: masses 1 and 3, v = 4 and 0, e = 0.5.**",
+  headOn(1.0, 3.0, 4.0, 0.5, "<b>Case \\ref case_A6 \"A6\", head-on: masses 1 and 3, v = 4 and 0, e = 0.5.</b>",
          "-1/2", -0.5, "3/2", 1.5, "8", "7/2", 3.5);
-  headOn(1.0, 1000.0, 1.0, 1.0, "**Case \\ref case_A6 \"A6\", head-on: masses 1 and 1000, v = 1 and 0, e = 1.**",
+  headOn(1.0, 1000.0, 1.0, 1.0, "<b>Case \\ref case_A6 \"A6\", head-on: masses 1 and 1000, v = 1 and 0, e = 1.</b>",
          "-999/1001", -999.0 / 1001.0, "2/1001", 2.0 / 1001.0, "1/2", "1/2", 0.5);
   restitutionSweep();
 }
