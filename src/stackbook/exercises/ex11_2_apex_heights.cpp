@@ -1,4 +1,7 @@
 // Exercise 11.2 (your answer goes here): see ex11_2_apex_heights.hpp and chapter 11.
+// Implement: apexHeights and apexError.
+// Delete every TODO(reader) comment once your code is in: while one is left, the exercise
+// counts as not solved and its tests do not run.
 #include "stackbook/exercises/ex11_2_apex_heights.hpp"
 
 namespace stackbook {

@@ -1,4 +1,7 @@
 // Exercise 11.3 (your answer goes here): see ex11_3_windowed_error.hpp and chapter 11.
+// Implement: windowedError.
+// Delete every TODO(reader) comment once your code is in: while one is left, the exercise
+// counts as not solved and its tests do not run.
 #include "stackbook/exercises/ex11_3_windowed_error.hpp"
 
 namespace stackbook {
