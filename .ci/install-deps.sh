@@ -12,6 +12,7 @@
 #   libbox2d-dev, libbullet-dev   the peers of bench/peers_bench (Box2D 2.4, Bullet 3), optional:
 #       without them the benchmark runs stackbook alone
 #   gnuplot-nox    the plots of `stackbook sweep` (chapter 11's figures)
+#   clang, libclang-rt-14-dev   the sanitize preset (clang's AddressSanitizer, UBSan and libFuzzer)
 set -e
 if [ "$(id -u)" -eq 0 ]; then SUDO=""; else SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
@@ -19,5 +20,6 @@ $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
   g++ cmake make ccache libeigen3-dev doctest-dev libtinyobjloader-dev libassimp-dev libtbb-dev \
   nlohmann-json3-dev libcli11-dev libtinygltf-dev libjs-three \
-  doxygen graphviz libjs-mathjax libbox2d-dev libbullet-dev gnuplot-nox >/dev/null
+  doxygen graphviz libjs-mathjax libbox2d-dev libbullet-dev gnuplot-nox \
+  clang libclang-rt-14-dev >/dev/null
 echo "stackbook: Debian packages installed."

@@ -41,7 +41,9 @@ RigidBody<2> boxAroundPoint(RandomSource& random, const Vec2& p) {
   const double a = random.uniform(0.1, 2.0), b = random.uniform(0.1, 2.0);
   RigidBody<2> body = makeDynamicBody<2>(m, AngVec<2>::Constant(m * (a * a + b * b) / 12.0));
   body.orientation = random.orientation<2>();
-  const Vec2 inside(random.uniform(-0.5 * a, 0.5 * a), random.uniform(-0.5 * b, 0.5 * b));
+  const double y = random.uniform(-0.5 * b, 0.5 * b);  // one draw per statement, y first as
+  const double x = random.uniform(-0.5 * a, 0.5 * a);  // before: argument order is unspecified
+  const Vec2 inside(x, y);
   body.position = p - body.orientation * inside;
   body.velocity = random.vector<2>(-2.0, 2.0);
   body.setAngularVelocity(random.angularVector<2>(-3.0, 3.0));

@@ -62,7 +62,9 @@ TEST_CASE_TEMPLATE("free fall follows the discrete semi-implicit Euler solution 
   RandomSource random(500 + D);
   for (int trial = 0; trial < 20; ++trial) {
     CAPTURE(trial);
-    RigidBody<D> body = isotropicBody<D>(random.logUniform(0.1, 10.0), random.uniform(0.1, 2.0));
+    const double inertia = random.uniform(0.1, 2.0);  // drawn first, one draw per statement:
+    const double mass = random.logUniform(0.1, 10.0);  // argument order is unspecified
+    RigidBody<D> body = isotropicBody<D>(mass, inertia);
     body.position = random.vector<D>(-2.0, 2.0);
     body.velocity = random.vector<D>(-3.0, 3.0);
     body.orientation = random.orientation<D>();

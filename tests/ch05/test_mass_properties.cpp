@@ -101,7 +101,8 @@ TEST_CASE("icosphere volume and inertia converge to the ball at second order") {
 // [test_torus_exact]
 TEST_CASE("the torus mesh has the exact volume of its polygonal revolution") {
   const double R = 1.0, r = 0.3;
-  for (const auto& [N, M] : {std::pair{8, 3}, std::pair{24, 12}, std::pair{101, 7}}) {
+  for (const auto& sizes : {std::pair{8, 3}, std::pair{24, 12}, std::pair{101, 7}}) {
+    const int N = sizes.first, M = sizes.second;  // not a structured binding: CAPTURE is a lambda
     CAPTURE(N);
     CAPTURE(M);
     const MassProperties<3> p = computeMassProperties<3>(torusMesh(R, r, N, M));

@@ -42,7 +42,9 @@ RigidBody<D> randomBody(std::mt19937& rng) {
   RigidBody<D> b = makeDynamicBody<D>(pos(rng), inertia);
   for (int k = 0; k < D; ++k) b.velocity[k] = u(rng);
   if constexpr (D == 3) {
-    b.orientation = Eigen::Quaterniond(u(rng), u(rng), u(rng), u(rng)).normalized();
+    // one draw per statement, in a fixed order (argument order is unspecified)
+    const double z = u(rng), y = u(rng), x = u(rng), w = u(rng);
+    b.orientation = Eigen::Quaterniond(w, x, y, z).normalized();
   } else {
     b.orientation = Eigen::Rotation2Dd(3.0 * u(rng));
   }
