@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "peers/box_scenes.hpp"
+#include "stackbook/peers/box_scenes.hpp"
 #include "peers/child_run.hpp"
 #include "peers/pile_scenes.hpp"
 #include "peers/report.hpp"

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "engine.hpp"
+#include "stackbook/peers/engine.hpp"
 
 namespace peers {
 

@@ -2,11 +2,27 @@
 // The piles of nonconvex bodies that peers_bench and pile_scaling_bench time once formed:
 // the bundled 1000-body piles (scenes/pile_1000_2d_full.json and pile_1000_3d_full.json)
 // with their arrays resized by overrides, so that every N uses the same body kinds.
+#include <memory>
 #include <string>
+#include <vector>
 
-#include "engine.hpp"
+#include "stackbook/peers/engine.hpp"
 
 namespace peers {
+
+/// A pile of nonconvex bodies read from a scene file (with --set style overrides), formed by
+/// simulating until every body is slower than `settleSpeed` or `formSeconds` have passed.
+/// A formed state is kept in `cacheDir` (empty: no cache) and reused by later runs.
+struct PileSpec {
+  std::string name;
+  std::string description;
+  std::string file;
+  std::vector<std::string> overrides;
+  double formSeconds = 3.0;
+  double settleSpeed = 0.05;
+  std::string cacheDir;
+};
+std::unique_ptr<Engine> makeStackbookPile(const PileSpec& pile, StackbookConfig config);
 
 /// The folder of the bundled scenes.
 std::string scenesDir();

@@ -10,7 +10,8 @@
 
 #include <Eigen/Geometry>
 
-#include "engine.hpp"
+#include "pile_scenes.hpp"
+#include "stackbook/peers/engine.hpp"
 #include "stackbook/scene/scene.hpp"
 #include "stackbook/scene/simulation.hpp"
 #include "stackbook/stacking/shock_propagation.hpp"

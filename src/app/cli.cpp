@@ -24,6 +24,7 @@
 #include "stackbook/output/viewer_html.hpp"
 #include "stackbook/scene/scene.hpp"
 #include "stackbook/scene/simulation.hpp"
+#include "stackbook/peers/sweep_peers.hpp"
 #include "stackbook/scene/sweep.hpp"
 
 namespace stackbook::app {
@@ -243,6 +244,7 @@ struct SweepArgs {
   std::string csv;
   bool list = false;
   bool noPlot = false;
+  bool plotOnly = false;
   int jobs = 2;
   std::vector<std::size_t> only;
 };
@@ -252,6 +254,7 @@ struct SweepArgs {
 int sweepCommand(const SweepArgs& args) {
   SweepSpec spec;
   std::vector<SweepRun> runs;
+  peers::registerSweepPeers();  // Box2D and Bullet, those this program was built with
   try {
     spec = loadSweepSpec(args.spec);
     spec.scene = resolveScene(spec.scene);
@@ -259,6 +262,7 @@ int sweepCommand(const SweepArgs& args) {
   } catch (const SceneError& e) {
     return reportError(e.what(), kBadInput);
   }
+  for (const std::string& note : sweepNotes(spec)) std::cerr << "note: " << note << "\n";
   const std::string csv =
       args.csv.empty() ? (fs::path("stackbook-out") / "sweeps" / (spec.name + ".csv")).string() : args.csv;
   if (args.list) {
@@ -275,14 +279,17 @@ int sweepCommand(const SweepArgs& args) {
     options.only = args.only;
     options.progress = [&](std::size_t done, std::size_t total, const SweepRow& row) {
       std::ostringstream line;
-      line << "[" << done << "/" << total << "] run " << row.run.index << " " << row.run.knob << "="
+      line << "[" << done << "/" << total << "] run " << row.run.index << " "
+           << (row.run.peer >= 0 ? row.run.engine + " " : std::string()) << row.run.knob << "="
            << row.run.value << (row.run.config == "-" ? "" : " " + row.run.config) << ": "
            << row.msPerSimulatedSecond << " ms per simulated s";
       for (std::size_t k = 0; k < row.errors.size(); ++k) line << ", " << spec.errors[k].name << " " << row.errors[k];
       std::cerr << line.str() << "\n";
     };
-    const std::size_t made = runSweep(spec, options);
-    std::cout << spec.name << ": " << made << " runs made, " << runs.size() - made << " already in " << csv << "\n";
+    if (!args.plotOnly) {
+      const std::size_t made = runSweep(spec, options);
+      std::cout << spec.name << ": " << made << " runs made, " << runs.size() - made << " already in " << csv << "\n";
+    }
     if (!args.noPlot) {
       const std::string prefix = (fs::path(csv).parent_path() / spec.name).string();
       for (const std::string& svg : plotSweep(spec, csv, prefix)) std::cout << "  plot " << svg << "\n";
@@ -342,6 +349,7 @@ int runCli(int argc, char** argv) {
     sweepApp->add_option("--jobs,-j", sweep.jobs, "Runs at once (default 2)")->check(CLI::Range(1, 256));
     sweepApp->add_option("--run", sweep.only, "Only these run indices (repeatable)");
     sweepApp->add_flag("--no-plot", sweep.noPlot, "Write the CSV only");
+    sweepApp->add_flag("--plot-only", sweep.plotOnly, "Draw the plots and the table from the CSV, running nothing");
 
     try {
       app.parse(argc, argv);

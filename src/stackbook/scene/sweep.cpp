@@ -25,7 +25,21 @@ namespace {
 
 const std::vector<std::string> kQuantities = {"position",       "velocity",    "angularVelocity",
                                               "energyDrift",    "maxPenetration", "rollingStart",
-                                              "flipPeriod"};
+                                              "flipPeriod",     "drift",       "sag"};
+
+/// The peers a spec may name and each one's knobs (whether or not this program has them built).
+const std::vector<std::pair<std::string, std::vector<std::string>>> kPeerKnobs = {
+    {"box2d", {"dt", "velocityIterations", "positionIterations"}},
+    {"bullet", {"dt", "iterations"}}};
+
+std::mutex& peerLock() {
+  static std::mutex m;
+  return m;
+}
+std::vector<SweepPeerEngine>& peerRegistry() {
+  static std::vector<SweepPeerEngine> engines;
+  return engines;
+}
 
 std::string joinPointer(const std::string& base, const std::string& key) { return base + "/" + key; }
 
@@ -91,7 +105,7 @@ SweepSpec parseSweepSpec(const json& doc, const std::string& file) {
   SweepSpec spec;
   spec.file = file;
   if (!doc.is_object()) throw SceneError(file, "", "a sweep spec must be a JSON object");
-  rejectUnknown(doc, {"name", "description", "scene", "engine", "set", "knobs", "errors"}, "", file);
+  rejectUnknown(doc, {"name", "description", "scene", "engine", "set", "knobs", "errors", "peers"}, "", file);
   spec.name = doc.contains("name") ? requireString(doc.at("name"), "/name", file)
                                    : std::filesystem::path(file).stem().string();
   const std::string scene = requireString(require(doc, "scene", "", file), "/scene", file);
@@ -141,7 +155,8 @@ SweepSpec parseSweepSpec(const json& doc, const std::string& file) {
     const std::string p = "/errors/" + std::to_string(k);
     const json& e = errors[k];
     if (!e.is_object()) throw SceneError(file, p, "must be an object {\"name\": ..., \"quantity\": ...}");
-    rejectUnknown(e, {"name", "quantity", "body", "axis", "radius", "tolerance", "expected", "relative"}, p, file);
+    rejectUnknown(e, {"name", "quantity", "body", "axis", "radius", "tolerance", "expected", "relative", "within", "unit"},
+                  p, file);
     SweepError out;
     out.quantity = requireString(require(e, "quantity", p, file), p + "/quantity", file);
     if (std::find(kQuantities.begin(), kQuantities.end(), out.quantity) == kQuantities.end()) {
@@ -149,7 +164,7 @@ SweepSpec parseSweepSpec(const json& doc, const std::string& file) {
       throw SceneError(file, p + "/quantity",
                        "unknown quantity \"" + out.quantity + "\"" +
                            (close.empty() ? std::string(" (position, velocity, angularVelocity, energyDrift, "
-                                                        "maxPenetration, rollingStart, flipPeriod)")
+                                                        "maxPenetration, rollingStart, flipPeriod, drift, sag)")
                                           : " (did you mean \"" + close + "\"?)"));
     }
     out.name = e.contains("name") ? requireString(e.at("name"), p + "/name", file) : out.quantity;
@@ -179,12 +194,105 @@ SweepSpec parseSweepSpec(const json& doc, const std::string& file) {
     if (out.relative && out.hasExpected && out.expected == 0.0) {
       throw SceneError(file, p + "/relative", "a relative error needs an expected value other than 0");
     }
+    if (e.contains("within")) {
+      const json& w = e.at("within");
+      if (!w.is_array() || w.empty()) throw SceneError(file, p + "/within", "must be a non-empty array of numbers > 0");
+      out.within.clear();
+      for (std::size_t j = 0; j < w.size(); ++j) {
+        const double bound = requireNumber(w[j], p + "/within/" + std::to_string(j), file);
+        if (!(bound > 0.0)) throw SceneError(file, p + "/within/" + std::to_string(j), "must be > 0");
+        out.within.push_back(bound);
+      }
+    }
+    if (e.contains("unit")) out.unit = requireString(e.at("unit"), p + "/unit", file);
     for (const SweepError& earlier : spec.errors) {
       if (earlier.name == out.name) throw SceneError(file, p + "/name", "\"" + out.name + "\" is already an error's name");
     }
     spec.errors.push_back(out);
   }
+  if (doc.contains("peers")) {
+    const json& peers = doc.at("peers");
+    if (!peers.is_array()) throw SceneError(file, "/peers", "must be an array of {\"engine\": ..., \"knobs\": [...]}");
+    for (std::size_t k = 0; k < peers.size(); ++k) {
+      const std::string p = "/peers/" + std::to_string(k);
+      const json& peer = peers[k];
+      if (!peer.is_object()) throw SceneError(file, p, "must be an object {\"engine\": ..., \"knobs\": [...]}");
+      rejectUnknown(peer, {"engine", "knobs"}, p, file);
+      SweepPeerSpec out;
+      out.engine = requireString(require(peer, "engine", p, file), p + "/engine", file);
+      const auto known = std::find_if(kPeerKnobs.begin(), kPeerKnobs.end(),
+                                      [&](const auto& entry) { return entry.first == out.engine; });
+      if (known == kPeerKnobs.end()) {
+        throw SceneError(file, p + "/engine", "unknown peer \"" + out.engine + "\" (box2d or bullet)");
+      }
+      const json& knobs2 = require(peer, "knobs", p, file);
+      if (!knobs2.is_array() || knobs2.empty()) throw SceneError(file, p + "/knobs", "must be a non-empty array of knobs");
+      for (std::size_t j = 0; j < knobs2.size(); ++j) {
+        const std::string q = p + "/knobs/" + std::to_string(j);
+        const json& knob = knobs2[j];
+        if (!knob.is_object()) throw SceneError(file, q, "must be an object {\"key\": ..., \"values\": [...]}");
+        rejectUnknown(knob, {"key", "values"}, q, file);
+        SweepKnob kn;
+        kn.key = requireString(require(knob, "key", q, file), q + "/key", file);
+        if (std::find(known->second.begin(), known->second.end(), kn.key) == known->second.end()) {
+          const std::string close = closestName(kn.key, known->second);
+          std::string names;
+          for (const std::string& n : known->second) names += (names.empty() ? "" : ", ") + n;
+          throw SceneError(file, q + "/key",
+                           "\"" + kn.key + "\" is not a knob of " + out.engine +
+                               (close.empty() ? " (" + names + ")" : " (did you mean \"" + close + "\"?)"));
+        }
+        for (const SweepKnob& earlier : out.knobs) {
+          if (earlier.key == kn.key) throw SceneError(file, q + "/key", "\"" + kn.key + "\" is already a knob");
+        }
+        const json& values = require(knob, "values", q, file);
+        if (!values.is_array() || values.empty()) throw SceneError(file, q + "/values", "must be a non-empty array");
+        for (std::size_t v = 0; v < values.size(); ++v) {
+          const std::string r = q + "/values/" + std::to_string(v);
+          if (kn.key == "dt") {
+            if (!(requireNumber(values[v], r, file) > 0.0)) throw SceneError(file, r, "must be > 0");
+          } else if (!values[v].is_number_integer() || values[v].get<long long>() < 1) {
+            throw SceneError(file, r, "must be an integer >= 1, got " + values[v].dump());
+          }
+          kn.values.push_back(values[v]);
+        }
+        out.knobs.push_back(std::move(kn));
+      }
+      spec.peers.push_back(std::move(out));
+    }
+  }
   return spec;
+}
+
+void registerSweepPeer(SweepPeerEngine engine) {
+  std::lock_guard<std::mutex> guard(peerLock());
+  for (SweepPeerEngine& e : peerRegistry()) {
+    if (e.name == engine.name) {
+      e = std::move(engine);
+      return;
+    }
+  }
+  peerRegistry().push_back(std::move(engine));
+}
+
+const SweepPeerEngine* findSweepPeer(const std::string& name) {
+  std::lock_guard<std::mutex> guard(peerLock());
+  for (const SweepPeerEngine& e : peerRegistry()) {
+    if (e.name == name) return &e;
+  }
+  return nullptr;
+}
+
+std::vector<std::string> sweepNotes(const SweepSpec& spec) {
+  std::vector<std::string> notes;
+  for (std::size_t k = 0; k < spec.peers.size(); ++k) {
+    if (findSweepPeer(spec.peers[k].engine) != nullptr) continue;
+    const std::string package = spec.peers[k].engine == "box2d" ? "libbox2d-dev" : "libbullet-dev";
+    notes.push_back(spec.file + ": /peers/" + std::to_string(k) + ": " + spec.peers[k].engine +
+                    " is not built into this program (install " + package +
+                    " and configure again): its rows are skipped");
+  }
+  return notes;
 }
 
 SweepSpec loadSweepSpec(const std::string& path) {
@@ -220,7 +328,117 @@ std::vector<SweepRun> sweepRuns(const SweepSpec& spec) {
     run.config = config.empty() ? "-" : config;
     runs.push_back(std::move(run));
   }
+  // Each built peer's grid after stackbook's, so that stackbook's run indices do not depend
+  // on which peers are installed.
+  for (std::size_t p = 0; p < spec.peers.size(); ++p) {
+    const SweepPeerEngine* engine = findSweepPeer(spec.peers[p].engine);
+    if (engine == nullptr) continue;
+    const std::vector<SweepKnob>& knobs = spec.peers[p].knobs;
+    std::size_t count = 1;
+    for (const SweepKnob& k : knobs) count *= k.values.size();
+    for (std::size_t local = 0; local < count; ++local) {
+      SweepRun run;
+      run.index = runs.size();
+      run.overrides = spec.sets;
+      run.engine = engine->label;
+      run.peer = static_cast<int>(p);
+      std::size_t rest = local;
+      std::string config;
+      for (std::size_t k = 0; k < knobs.size(); ++k) {
+        const json& value = knobs[k].values[rest % knobs[k].values.size()];
+        rest /= knobs[k].values.size();
+        run.peerKnobs.emplace_back(knobs[k].key, value);
+        if (k == 0) {
+          run.knob = knobs[k].key;
+          run.value = value.dump();
+        } else {
+          config += (config.empty() ? "" : ";") + knobs[k].key + "=" + value.dump();
+        }
+      }
+      run.config = config.empty() ? "-" : config;
+      runs.push_back(std::move(run));
+    }
+  }
   return runs;
+}
+
+double measureSweepTrajectory(const SweepError& e, const SweepTrajectory& t, const std::string& file) {
+  const std::size_t bodies = t.isStatic.size();
+  if (t.frames.empty()) throw SceneError(file, "", "error \"" + e.name + "\": the run has no frames");
+  const std::size_t last = t.frames.size() - 1;
+  const auto bodyCheck = [&] {
+    if (e.body >= static_cast<int>(bodies)) {
+      throw SceneError(file, "", "error \"" + e.name + "\": body " + std::to_string(e.body) + " is not in the scene (" +
+                                     std::to_string(bodies) + " bodies)");
+    }
+  };
+  const auto axisCheck = [&](int size) {
+    if (e.axis >= size) {
+      throw SceneError(file, "", "error \"" + e.name + "\": axis " + std::to_string(e.axis) + " does not exist in " +
+                                     std::to_string(t.dimension) + "D");
+    }
+  };
+  const std::size_t b = static_cast<std::size_t>(e.body);
+  Eigen::Vector3d up = Eigen::Vector3d::Unit(t.dimension - 1);
+  if (t.gravity.norm() > 0.0) up = -t.gravity.normalized();
+  double value = 0.0;
+  if (e.quantity == "position") {
+    bodyCheck();
+    axisCheck(t.dimension);
+    value = t.frames[last][b].position[e.axis];
+  } else if (e.quantity == "velocity") {
+    bodyCheck();
+    axisCheck(t.dimension);
+    value = t.frames[last][b].velocity[e.axis];
+  } else if (e.quantity == "angularVelocity") {
+    bodyCheck();
+    axisCheck(t.dimension == 2 ? 1 : 3);
+    value = t.frames[last][b].angularVelocity[t.dimension == 2 ? 2 : e.axis];
+  } else if (e.quantity == "energyDrift") {
+    const double e0 = t.energies.front();
+    double worst = 0.0;
+    for (double f : t.energies) worst = std::max(worst, std::abs(f - e0));
+    value = e0 != 0.0 ? worst / std::abs(e0) : worst;
+  } else if (e.quantity == "maxPenetration") {
+    value = t.maxPenetration;
+  } else if (e.quantity == "rollingStart") {
+    bodyCheck();
+    const Eigen::Vector3d down = -e.radius * up;
+    value = std::numeric_limits<double>::infinity();
+    for (std::size_t f = 0; f < t.frames.size(); ++f) {
+      const Eigen::Vector3d u = t.frames[f][b].velocity + t.frames[f][b].angularVelocity.cross(down);
+      if (u.norm() < e.tolerance) {
+        value = t.times[f];
+        break;
+      }
+    }
+  } else if (e.quantity == "flipPeriod") {
+    bodyCheck();
+    if (t.dimension == 2) throw SceneError(file, "", "error \"" + e.name + "\": flipPeriod needs a 3D scene");
+    std::vector<double> flips;
+    double previous = 0.0;
+    for (std::size_t f = 0; f < t.frames.size(); ++f) {
+      const double w = (t.frames[f][b].rotation.transpose() * t.frames[f][b].angularVelocity)[e.axis];
+      if (f > 0 && (previous > 0.0) != (w > 0.0)) {
+        flips.push_back(t.times[f - 1] + (t.times[f] - t.times[f - 1]) * previous / (previous - w));
+      }
+      previous = w;
+    }
+    value = flips.size() >= 2 ? 2.0 * (flips.back() - flips.front()) / static_cast<double>(flips.size() - 1)
+                              : std::numeric_limits<double>::infinity();
+  } else if (e.quantity == "drift") {
+    for (std::size_t k = 0; k < bodies; ++k) {
+      if (t.isStatic[k]) continue;
+      const Eigen::Vector3d d = t.frames[last][k].position - t.frames[0][k].position;
+      value = std::max(value, (d - d.dot(up) * up).norm());
+    }
+  } else if (e.quantity == "sag") {
+    bodyCheck();
+    value = std::abs((t.frames[0][b].position - t.frames[last][b].position).dot(up));
+  }
+  if (!e.hasExpected) return value;
+  const double diff = std::abs(value - e.expected);
+  return e.relative ? diff / std::abs(e.expected) : diff;
 }
 
 namespace {
@@ -293,6 +511,21 @@ double measureError(const SweepError& e, const RunResult<D>& r, const Scene& sce
       value = flips.size() >= 2 ? 2.0 * (flips.back() - flips.front()) / static_cast<double>(flips.size() - 1)
                                 : std::numeric_limits<double>::infinity();
     }
+  } else if (e.quantity == "drift" || e.quantity == "sag") {
+    // The same definitions as measureSweepTrajectory()'s, on the recorded poses.
+    const World<D>& world = std::get<SceneBodies<D>>(scene.bodies).world;
+    Vec<D> up = Vec<D>::Unit(D - 1);
+    if (world.gravity.norm() > 0.0) up = -world.gravity.normalized();
+    if (e.quantity == "sag") {
+      bodyCheck();
+      value = std::abs((rec.poses()[0][b].position - rec.poses()[last][b].position).dot(up));
+    } else {
+      for (std::size_t k = 0; k < rec.bodyCount(); ++k) {
+        if (world.bodies[k].isStatic()) continue;
+        const Vec<D> d = rec.poses()[last][k].position - rec.poses()[0][k].position;
+        value = std::max(value, (d - d.dot(up) * up).norm());
+      }
+    }
   }
   if (!e.hasExpected) return value;
   const double diff = std::abs(value - e.expected);
@@ -312,7 +545,17 @@ bool needsEveryStep(const SweepSpec& spec) {
 }  // namespace
 
 SweepRow runSweepRun(const SweepSpec& spec, const SweepRun& run) {
-  std::vector<std::string> overrides = run.overrides;
+  if (run.peer >= 0) {
+    const std::string name = spec.peers.at(static_cast<std::size_t>(run.peer)).engine;
+    const SweepPeerEngine* engine = findSweepPeer(name);
+    if (engine == nullptr) {
+      throw SceneError(spec.file, "/peers/" + std::to_string(run.peer), name + " is not built into this program");
+    }
+    return engine->run(spec, run);
+  }
+  // One thread per run unless the spec says otherwise: the sweep runs runs side by side.
+  std::vector<std::string> overrides = {"solver.threads=1"};
+  overrides.insert(overrides.end(), run.overrides.begin(), run.overrides.end());
   Scene scene = loadScene(spec.scene, overrides);
   if (needsEveryStep(spec)) scene.output.frameRate = 1.0 / scene.settings.dt;
   const SceneRun result = runScene(scene);
@@ -338,7 +581,7 @@ std::string sweepCsvHeader(const SweepSpec& spec) {
 
 std::string sweepCsvLine(const SweepSpec& spec, const SweepRow& row) {
   std::string line = std::to_string(row.run.index) + "," + csvField(std::filesystem::path(spec.scene).stem().string()) +
-                     "," + csvField(spec.engine) + "," + csvField(row.run.config) + "," + csvField(row.run.knob) +
+                     "," + csvField(row.run.engine) + "," + csvField(row.run.config) + "," + csvField(row.run.knob) +
                      "," + csvField(row.run.value) + "," + std::to_string(row.steps) + "," + number(row.msPerStep) +
                      "," + number(row.msPerSimulatedSecond);
   for (double e : row.errors) line += "," + number(e);
@@ -490,36 +733,77 @@ std::vector<std::size_t> paretoFront(const std::vector<double>& cost, const std:
   return front;
 }
 
+namespace {
+
+/// The bound of a table row as the reader reads it: "1 %" for a relative error, "0.001 m"
+/// for an absolute one.
+std::string boundText(const SweepError& e, double bound) {
+  char text[48];
+  if (e.relative && e.hasExpected) {
+    std::snprintf(text, sizeof text, "%g %%", bound * 100.0);
+  } else {
+    std::snprintf(text, sizeof text, "%g%s%s", bound, e.unit.empty() ? "" : " ", e.unit.c_str());
+  }
+  return text;
+}
+
+std::string settingText(const std::vector<std::string>& row) {
+  return row[4] + " = " + row[5] + (row[3] == "-" ? "" : ", " + row[3]);
+}
+
+}  // namespace
+
 std::string sweepParetoTable(const SweepSpec& spec, const std::string& csvPath) {
   const auto rows = readSweepCsv(csvPath);
+  bool anyPeer = false;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    if (rows[r].size() == rows[0].size() && rows[r][2] != spec.engine) anyPeer = true;
+  }
   std::ostringstream md;
-  md << "| error | within | cheapest setting | its error | ms per simulated s |\n|---|---|---|---|---|\n";
+  md << "| error | within | cheapest setting | its error | ms per simulated s |";
+  if (anyPeer) md << " cheapest peer run | its error | ms per simulated s |";
+  md << "\n|---|---|---|---|---|" << (anyPeer ? "---|---|---|" : "") << "\n";
+  const auto fmt = [](double x) {
+    char t[32];
+    std::snprintf(t, sizeof t, "%.3g", x);
+    return std::string(t);
+  };
   for (std::size_t e = 0; e < spec.errors.size(); ++e) {
-    for (const double bound : {1e-2, 1e-3, 1e-4}) {
-      std::size_t best = 0;
-      double bestCost = std::numeric_limits<double>::infinity();
-      for (std::size_t r = 1; r < rows.size(); ++r) {
-        if (rows[r].size() != rows[0].size()) continue;
-        const double err = std::strtod(rows[r][9 + e].c_str(), nullptr);
-        const double cost = std::strtod(rows[r][8].c_str(), nullptr);
-        if (err <= bound && cost < bestCost) {
-          best = r;
-          bestCost = cost;
+    for (const double bound : spec.errors[e].within) {
+      // The cheapest row within the bound, of stackbook (peer false) or of any peer.
+      const auto cheapest = [&](bool peer) {
+        std::size_t best = 0;
+        double bestCost = std::numeric_limits<double>::infinity();
+        for (std::size_t r = 1; r < rows.size(); ++r) {
+          if (rows[r].size() != rows[0].size() || (rows[r][2] != spec.engine) != peer) continue;
+          const double err = std::strtod(rows[r][9 + e].c_str(), nullptr);
+          const double cost = std::strtod(rows[r][8].c_str(), nullptr);
+          if (err <= bound && cost < bestCost) {
+            best = r;
+            bestCost = cost;
+          }
+        }
+        return best;
+      };
+      md << "| " << spec.errors[e].name << " | " << boundText(spec.errors[e], bound) << " | ";
+      const std::size_t ours = cheapest(false);
+      if (ours == 0) {
+        md << "none | | |";
+      } else {
+        md << settingText(rows[ours]) << " | " << fmt(std::strtod(rows[ours][9 + e].c_str(), nullptr)) << " | "
+           << fmt(std::strtod(rows[ours][8].c_str(), nullptr)) << " |";
+      }
+      if (anyPeer) {
+        const std::size_t theirs = cheapest(true);
+        if (theirs == 0) {
+          md << " none | | |";
+        } else {
+          md << " " << rows[theirs][2] << ": " << settingText(rows[theirs]) << " | "
+             << fmt(std::strtod(rows[theirs][9 + e].c_str(), nullptr)) << " | "
+             << fmt(std::strtod(rows[theirs][8].c_str(), nullptr)) << " |";
         }
       }
-      char within[32];
-      std::snprintf(within, sizeof within, "%g %s", spec.errors[e].relative && spec.errors[e].hasExpected ? bound * 100.0 : bound,
-                    spec.errors[e].relative && spec.errors[e].hasExpected ? "%" : "");
-      md << "| " << spec.errors[e].name << " | " << within << " | ";
-      if (best == 0) {
-        md << "none | | |\n";
-        continue;
-      }
-      char err[32], cost[32];
-      std::snprintf(err, sizeof err, "%.3g", std::strtod(rows[best][9 + e].c_str(), nullptr));
-      std::snprintf(cost, sizeof cost, "%.3g", bestCost);
-      md << rows[best][4] << " = " << rows[best][5] << (rows[best][3] == "-" ? "" : ", " + rows[best][3]) << " | "
-         << err << " | " << cost << " |\n";
+      md << "\n";
     }
   }
   return md.str();
@@ -530,12 +814,23 @@ std::vector<std::string> plotSweep(const SweepSpec& spec, const std::string& csv
   if (rows.size() < 2) throw std::runtime_error("plotSweep: '" + csvPath + "' has no rows");
   const std::size_t costColumn = 8, firstError = 9;
   // Lines: one per config, points in the order of the first knob's values.
+  // Lines: one per engine and config, points in the order of the first knob's values; with
+  // peers in the CSV each line is titled by its engine too.
   std::map<std::string, std::vector<std::size_t>> lines;
   std::vector<std::string> configs;
+  std::map<std::string, std::string> titles;
+  bool anyPeer = false;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    if (rows[r].size() == rows[0].size() && rows[r][2] != spec.engine) anyPeer = true;
+  }
   for (std::size_t r = 1; r < rows.size(); ++r) {
     if (rows[r].size() != rows[0].size()) continue;
-    if (lines.find(rows[r][3]) == lines.end()) configs.push_back(rows[r][3]);
-    lines[rows[r][3]].push_back(r);
+    const std::string key = rows[r][2] + "\t" + rows[r][3];
+    if (lines.find(key) == lines.end()) {
+      configs.push_back(key);
+      titles[key] = !anyPeer ? rows[r][3] : rows[r][2] + (rows[r][3] == "-" ? "" : ": " + rows[r][3]);
+    }
+    lines[key].push_back(r);
   }
   std::ostringstream gp;
   // noenhanced: scene and knob names are shown as written (gnuplot's enhanced text would
@@ -571,7 +866,7 @@ std::vector<std::string> plotSweep(const SweepSpec& spec, const std::string& csv
     gp << "set output '" << svg << "'\nset ylabel '" << spec.errors[e].name << "'\nset title '"
        << spec.name << ": " << spec.knobs.front().key << " along each line'\nplot ";
     for (std::size_t c = 0; c < configs.size(); ++c) {
-      gp << "'" << data << "' index " << c << " using 1:2 with linespoints pt 7 title '" << configs[c]
+      gp << "'" << data << "' index " << c << " using 1:2 with linespoints pt 7 title '" << titles[configs[c]]
          << "', '" << data << "' index " << c << " using 1:2:3 with labels offset 0.8,0.6 font 'sans,9' notitle, ";
     }
     gp << "'" << data << "' index " << configs.size()

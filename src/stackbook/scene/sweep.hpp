@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
 #include "stackbook/scene/simulation.hpp"
@@ -33,7 +34,11 @@ struct SweepKnob {
 /// - `rollingStart`: the first frame time at which body `body` (a ball of `radius`) stops
 ///   slipping on a floor below it: |v + omega x (-radius up)| < `tolerance`;
 /// - `flipPeriod`: twice the mean time between sign changes of component `axis` of body
-///   `body`'s body-frame angular velocity (3D).
+///   `body`'s body-frame angular velocity (3D);
+/// - `drift`: the largest horizontal distance (across gravity) of a dynamic body's centre
+///   from its start, at the end (m);
+/// - `sag`: how far body `body`'s centre moved along gravity from its start, at the end (m;
+///   sinking and rising alike, since standing still is the answer).
 /// With `expected` given the error is |value - expected|, divided by |expected| when
 /// `relative` (the default), else the value itself.
 struct SweepError {
@@ -46,6 +51,18 @@ struct SweepError {
   bool hasExpected = false;
   double expected = 0.0;
   bool relative = true;
+  /// The accuracies the table of cheapest settings asks for (sweepParetoTable()): relative
+  /// errors as fractions (1e-2 is 1 %), absolute ones in `unit`.
+  std::vector<double> within = {1e-2, 1e-3, 1e-4};
+  std::string unit;  ///< of an absolute error, e.g. "m" (shown in the table)
+};
+
+/// A peer engine's runs in a sweep: the engine (`box2d` in 2D, `bullet` in 3D) and its own
+/// knobs (`dt`; Box2D's `velocityIterations` and `positionIterations`; Bullet's
+/// `iterations`), run on the same scene with the same error measures.
+struct SweepPeerSpec {
+  std::string engine;
+  std::vector<SweepKnob> knobs;
 };
 
 struct SweepSpec {
@@ -56,6 +73,7 @@ struct SweepSpec {
   std::vector<std::string> sets;  ///< fixed overrides of every run
   std::vector<SweepKnob> knobs;   ///< the first is plotted along each line, the rest make the lines
   std::vector<SweepError> errors;
+  std::vector<SweepPeerSpec> peers;  ///< the `peers` field: Box2D or Bullet on the same scene
 };
 // [sweep_spec]
 
@@ -73,11 +91,19 @@ struct SweepRun {
   std::string config;                  ///< the other knobs' key=value, joined by ';' ("-" if none)
   std::string knob;                    ///< the first knob's key
   std::string value;                   ///< its value as JSON text
+  std::string engine = "stackbook";    ///< the CSV's engine column (a peer's label)
+  int peer = -1;                       ///< index into spec.peers, -1 for stackbook
+  /// A peer run's knob values (key, JSON value); stackbook's are in `overrides`.
+  std::vector<std::pair<std::string, nlohmann::json>> peerKnobs;
 };
 
 /// The grid of runs: the Cartesian product of the knobs' values, the first knob varying
-/// fastest, so that the runs of one line are adjacent.
+/// fastest, so that the runs of one line are adjacent; then each peer's grid, for every
+/// peer that is built (sweepNotes() names the others).
 std::vector<SweepRun> sweepRuns(const SweepSpec& spec);
+
+/// One line per peer of the spec that is not built into this program (its runs are skipped).
+std::vector<std::string> sweepNotes(const SweepSpec& spec);
 
 /// The measured row of one run.
 struct SweepRow {
@@ -93,6 +119,39 @@ struct SweepRow {
 /// totalSeconds), not the recording's. Throws SceneError for a bad override.
 SweepRow runSweepRun(const SweepSpec& spec, const SweepRun& run);
 // [sweep_run]
+
+/// A run as engine-neutral frames, for the measures a peer's run shares with stackbook's:
+/// every body's state in 3D (2D: the x-y plane, rotation and angular velocity about z).
+struct SweepBodyState {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d angularVelocity = Eigen::Vector3d::Zero();  ///< world frame
+};
+struct SweepTrajectory {
+  int dimension = 3;
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
+  std::vector<bool> isStatic;                        ///< per body
+  std::vector<double> times;                         ///< per frame
+  std::vector<std::vector<SweepBodyState>> frames;   ///< per frame, per body
+  std::vector<double> energies;                      ///< per frame: kinetic + potential (-m g.x)
+  double maxPenetration = 0.0;                       ///< deepest overlap over the frames (m)
+};
+/// The error `e` of a run given as frames (what runSweepRun() measures for stackbook, from
+/// the same definitions). Throws SceneError naming `file` when the body or axis does not exist.
+double measureSweepTrajectory(const SweepError& e, const SweepTrajectory& t, const std::string& file);
+
+/// A peer engine the sweep can run (stackbook_peers registers Box2D and Bullet when built).
+struct SweepPeerEngine {
+  std::string name;   ///< as in the spec: "box2d", "bullet"
+  std::string label;  ///< the CSV's engine column: "Box2D 2.4.1", "Bullet 3.24"
+  int dimension = 2;
+  std::function<SweepRow(const SweepSpec&, const SweepRun&)> run;
+};
+/// Makes a peer available to sweepRuns() and runSweepRun() (replacing one of the same name).
+void registerSweepPeer(SweepPeerEngine engine);
+/// The registered peer of that name, or null.
+const SweepPeerEngine* findSweepPeer(const std::string& name);
 
 /// The CSV header: `run,scene,engine,config,knob,value,steps,ms_per_step,ms_per_simulated_second`
 /// and one column per error, named as the error.
@@ -128,9 +187,10 @@ std::vector<std::vector<std::string>> readSweepCsv(const std::string& csvPath);
 std::vector<std::string> plotSweep(const SweepSpec& spec, const std::string& csvPath,
                                    const std::string& prefix);
 
-/// A Markdown table of the cheapest run within 1 %, 0.1 % and 0.01 % of each error measure
-/// (error <= 1e-2, 1e-3, 1e-4: relative errors, or metres / seconds for absolute ones), with
-/// its setting and its cost, read from a sweep CSV; "none" where no run gets there.
+/// A Markdown table of the cheapest stackbook run within each accuracy of each error measure
+/// (SweepError::within: 1 %, 0.1 % and 0.01 % by default), with its setting and its cost,
+/// and the cheapest peer run at the same accuracy, read from a sweep CSV; "none" where no
+/// run gets there.
 std::string sweepParetoTable(const SweepSpec& spec, const std::string& csvPath);
 
 /// The Pareto front of (cost, error) points: indices of the points no other point beats

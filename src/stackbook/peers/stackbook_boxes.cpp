@@ -2,7 +2,7 @@
 // stepped by GBF's step with shock propagation (stackingStep) at the scene's dt.
 #include <Eigen/Geometry>
 
-#include "engine.hpp"
+#include "stackbook/peers/engine.hpp"
 #include "stackbook/geometry/analytic_sdf.hpp"
 #include "stackbook/stacking/shock_propagation.hpp"
 
@@ -19,13 +19,13 @@ class StackbookBoxes final : public BoxEngine {
     settings_ = config == StackbookConfig::PassAsContactStage ? passAsContactStage() : StepSettings{};
     settings_.dt = scene.dt;
     world_.gravity = scene.gravityVector().head<D>();
-    const Material material{0.0, scene.friction, 0.0};  // pairs take the smaller mu: Eq. (8.4)
+    const Material material{scene.restitution, scene.friction, 0.0};  // pairs take the smaller mu: Eq. (8.4)
     for (const BoxSpec& b : scene.boxes) {
       const Vec<D> size = b.size.head<D>();
       const Vec<D> centre = b.centre.head<D>();
       RigidBody<D> body;
       if (b.isStatic()) {
-        body = makeStaticBody<D>(centre, identityOrientation<D>());
+        body = makeStaticBody<D>(centre, orientationOf(b.rotation));
       } else {
         AngVec<D> inertia;
         const Eigen::Vector3d q = b.size.cwiseProduct(b.size);
@@ -36,6 +36,13 @@ class StackbookBoxes final : public BoxEngine {
         }
         body = makeDynamicBody<D>(b.mass, inertia);
         body.position = centre;
+        body.orientation = orientationOf(b.rotation);
+        body.velocity = b.velocity.head<D>();
+        if constexpr (D == 2) {
+          body.angularVelocity[0] = b.angularVelocity.z();
+        } else {
+          body.angularVelocity = b.angularVelocity;
+        }
       }
       world_.addBody(body, shapeFor(size), material);
     }
@@ -84,6 +91,14 @@ class StackbookBoxes final : public BoxEngine {
   }
 
  private:
+  static Orientation<D> orientationOf(const Eigen::Matrix3d& r) {
+    if constexpr (D == 2) {
+      return Orientation<D>(std::atan2(r(1, 0), r(0, 0)));
+    } else {
+      return Orientation<D>(Eigen::Quaterniond(r).normalized());
+    }
+  }
+
   /// One shape per distinct size (every unit box shares one).
   std::shared_ptr<const Shape<D>> shapeFor(const Vec<D>& size) {
     for (const auto& [s, shape] : shapes_) {

@@ -1,16 +1,17 @@
 // The Bullet 3 adapter of peers_bench, written against Bullet's public API
 // (btBulletDynamicsCommon.h): a btDiscreteDynamicsWorld with the default collision
 // configuration, dispatcher, dynamic-AABB-tree broad phase and sequential-impulse solver at
-// its defaults (10 iterations, split impulse), gravity down z, a static ground box and
+// its defaults (split impulse; the scene's iteration count, 10 by default), gravity down z, a static ground box and
 // dynamic boxes of the scene's size and mass. stepSimulation(dt, 0) takes exactly one step
 // of dt. Bullet mixes friction as mu_a mu_b, so each body gets sqrt(mu) to make the pair's
 // mu the scene's. Deactivation (sleeping) is off, as stackbook has none.
-#include "engine.hpp"
+#include "stackbook/peers/engine.hpp"
 
 #ifdef STACKBOOK_HAVE_BULLET
 #include <btBulletDynamicsCommon.h>
 
 #include <cmath>
+#include <cstdio>
 
 namespace peers {
 
@@ -25,6 +26,8 @@ class BulletEngine final : public BoxEngine {
     const Eigen::Vector3d g = scene.gravityVector();
     world_.setGravity(btVector3(static_cast<btScalar>(g.x()), static_cast<btScalar>(g.y()), static_cast<btScalar>(g.z())));
     const auto mu = static_cast<btScalar>(std::sqrt(scene.friction));
+    const auto restitution = static_cast<btScalar>(std::sqrt(scene.restitution));  // also mixed as e_a e_b
+    world_.getSolverInfo().m_numIterations = scene.solverIterations;
     for (const BoxSpec& spec : scene.boxes) {
       const btVector3 half(static_cast<btScalar>(0.5 * spec.size.x()), static_cast<btScalar>(0.5 * spec.size.y()),
                            static_cast<btScalar>(0.5 * spec.size.z()));
@@ -34,14 +37,28 @@ class BulletEngine final : public BoxEngine {
       if (!spec.isStatic()) shapes_.back()->calculateLocalInertia(mass, inertia);
       btTransform pose;
       pose.setIdentity();
+      pose.setBasis(btMatrix3x3(
+          static_cast<btScalar>(spec.rotation(0, 0)), static_cast<btScalar>(spec.rotation(0, 1)),
+          static_cast<btScalar>(spec.rotation(0, 2)), static_cast<btScalar>(spec.rotation(1, 0)),
+          static_cast<btScalar>(spec.rotation(1, 1)), static_cast<btScalar>(spec.rotation(1, 2)),
+          static_cast<btScalar>(spec.rotation(2, 0)), static_cast<btScalar>(spec.rotation(2, 1)),
+          static_cast<btScalar>(spec.rotation(2, 2))));
       pose.setOrigin(btVector3(static_cast<btScalar>(spec.centre.x()), static_cast<btScalar>(spec.centre.y()),
                                static_cast<btScalar>(spec.centre.z())));
       btRigidBody::btRigidBodyConstructionInfo info(mass, nullptr, shapes_.back().get(), inertia);
       info.m_startWorldTransform = pose;
       info.m_friction = mu;
-      info.m_restitution = 0;
+      info.m_restitution = restitution;
       bodies_.push_back(std::make_unique<btRigidBody>(info));
       bodies_.back()->setActivationState(DISABLE_DEACTIVATION);
+      if (!spec.isStatic()) {
+        bodies_.back()->setLinearVelocity(btVector3(static_cast<btScalar>(spec.velocity.x()),
+                                                    static_cast<btScalar>(spec.velocity.y()),
+                                                    static_cast<btScalar>(spec.velocity.z())));
+        bodies_.back()->setAngularVelocity(btVector3(static_cast<btScalar>(spec.angularVelocity.x()),
+                                                     static_cast<btScalar>(spec.angularVelocity.y()),
+                                                     static_cast<btScalar>(spec.angularVelocity.z())));
+      }
       world_.addRigidBody(bodies_.back().get());
     }
   }
@@ -92,6 +109,11 @@ std::unique_ptr<BoxEngine> makeBullet(const BoxScene& scene) {
   return std::make_unique<BulletEngine>(scene);
 }
 bool haveBullet() { return true; }
+std::string bulletLabel() {
+  char text[32];
+  std::snprintf(text, sizeof text, "Bullet %d.%02d", btGetVersion() / 100, btGetVersion() % 100);
+  return text;
+}
 
 }  // namespace peers
 
@@ -100,6 +122,7 @@ bool haveBullet() { return true; }
 namespace peers {
 std::unique_ptr<BoxEngine> makeBullet(const BoxScene&) { return nullptr; }
 bool haveBullet() { return false; }
+std::string bulletLabel() { return "Bullet"; }
 }  // namespace peers
 
 #endif

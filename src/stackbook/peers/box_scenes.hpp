@@ -1,7 +1,9 @@
 #pragma once
-// The box scenes every engine runs (peers_bench): one engine-neutral description of each
-// (the ground slab and the boxes, their sizes, poses and masses, friction, gravity, step),
-// from which the stackbook, Box2D and Bullet adapters build the same geometry.
+/// \file
+/// \brief The box scenes every engine runs (peers_bench and the peers of `stackbook sweep`,
+/// chapter 11): one engine-neutral description of each (the ground slab and the boxes, their
+/// sizes, poses, velocities and masses, friction, gravity, step, the peers' solver knobs),
+/// from which the stackbook, Box2D and Bullet adapters build the same geometry.
 #include <string>
 #include <vector>
 
@@ -15,6 +17,9 @@ struct BoxSpec {
   Eigen::Vector3d size = Eigen::Vector3d::Ones();
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   double mass = 1.0;
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  ///< orientation (2D: about z)
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d angularVelocity = Eigen::Vector3d::Zero();  ///< world frame (2D: z)
   bool isStatic() const { return mass == 0.0; }
 };
 
@@ -28,7 +33,22 @@ struct BoxScene {
   /// flat ground then slides as on an incline of this slope (0: no tilt).
   double tilt = 0.0;
   double friction = 0.6;    ///< the friction of every contact (each engine's mixing rule accounted for)
+  /// The restitution of every contact (each engine's mixing rule accounted for).
+  double restitution = 0.0;
   double dt = 1.0 / 60.0;
+  /// When set, the gravity vector itself (gravity and tilt are then ignored).
+  bool hasGravityVector = false;
+  Eigen::Vector3d gravityVec = Eigen::Vector3d::Zero();
+  /// Box2D keeps a skin of b2_polygonRadius (1 cm) around every polygon, so boxes of the
+  /// scene's size rest that far apart (peers_bench keeps it, as Box2D's users do). When set,
+  /// the Box2D adapter builds each box smaller by the skin, so that the rounded box it
+  /// collides is the scene's box (the sweeps of chapter 11 compare geometry this way).
+  bool box2dSkinInside = false;
+  /// Box2D's knobs: velocity and position iterations per step (its testbed's defaults).
+  int velocityIterations = 8;
+  int positionIterations = 3;
+  /// Bullet's knob: sequential-impulse iterations per step (its default).
+  int solverIterations = 10;
   std::vector<BoxSpec> boxes;  ///< boxes[0] is the ground
   /// The index of the top box (the one whose sag is reported).
   int top() const;

@@ -5,7 +5,7 @@
 
 #include <Eigen/Core>
 
-#include "box_scenes.hpp"
+#include "stackbook/peers/box_scenes.hpp"
 
 namespace peers {
 

@@ -1,5 +1,5 @@
 // The accuracy measures of peers_bench (measures.hpp).
-#include "measures.hpp"
+#include "stackbook/peers/measures.hpp"
 
 #include <algorithm>
 #include <cmath>

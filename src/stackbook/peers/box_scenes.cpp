@@ -1,5 +1,5 @@
-// The box scenes of peers_bench (box_scenes.hpp).
-#include "box_scenes.hpp"
+// The box scenes of the peers (box_scenes.hpp).
+#include "stackbook/peers/box_scenes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -49,6 +49,7 @@ int BoxScene::top() const {
 }
 
 Eigen::Vector3d BoxScene::gravityVector() const {
+  if (hasGravityVector) return gravityVec;
   Eigen::Vector3d g = Eigen::Vector3d::Zero();
   g.x() = gravity * std::sin(tilt);
   g[dimension - 1] = -gravity * std::cos(tilt);

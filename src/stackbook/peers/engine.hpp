@@ -1,13 +1,15 @@
 #pragma once
-// One engine running one scene in peers_bench: stackbook (its defaults, or the pass as the
-// contact stage), Box2D 2.4 or Bullet 3. The program times step() and asks for the accuracy
-// at the end; each adapter builds the scene from the same description.
+/// \file
+/// \brief One engine running one box scene (peers_bench, and the peers of `stackbook sweep`,
+/// chapter 11): stackbook (its defaults, or the pass as the contact stage), Box2D 2.4 or
+/// Bullet 3. The caller times step() and asks for the states or the accuracy; each adapter
+/// builds the scene from the same description (box_scenes.hpp).
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "box_scenes.hpp"
-#include "measures.hpp"
+#include "stackbook/peers/box_scenes.hpp"
+#include "stackbook/peers/measures.hpp"
 
 namespace peers {
 
@@ -60,24 +62,14 @@ enum class StackbookConfig {
 
 std::unique_ptr<Engine> makeStackbookBoxes(const BoxScene& scene, StackbookConfig config);
 
-/// A pile of nonconvex bodies read from a scene file (with --set style overrides), formed by
-/// simulating until every body is slower than `settleSpeed` or `formSeconds` have passed.
-/// A formed state is kept in `cacheDir` (empty: no cache) and reused by later runs.
-struct PileSpec {
-  std::string name;
-  std::string description;
-  std::string file;
-  std::vector<std::string> overrides;
-  double formSeconds = 3.0;
-  double settleSpeed = 0.05;
-  std::string cacheDir;
-};
-std::unique_ptr<Engine> makeStackbookPile(const PileSpec& pile, StackbookConfig config);
-
 /// The peers; null when the library was not found at configure time.
 std::unique_ptr<BoxEngine> makeBox2d(const BoxScene& scene);
 std::unique_ptr<BoxEngine> makeBullet(const BoxScene& scene);
 bool haveBox2d();
 bool haveBullet();
+/// The engines' names with their versions, as the library reports them ("Box2D 2.4.1",
+/// "Bullet 3.24"); "Box2D" and "Bullet" when not built.
+std::string box2dLabel();
+std::string bulletLabel();
 
 }  // namespace peers

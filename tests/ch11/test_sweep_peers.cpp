@@ -1,0 +1,198 @@
+// Chapter 11 (peers on the same axes): the peers' part of a sweep spec and its one-line
+// errors, Box2D and Bullet rows on the same scene with the same measures (or one note when a
+// peer is not built), the structure measures, and the checked-in results of the chapter's
+// sweeps, of which a sample of rows is run again and must come out the same.
+#include <doctest/doctest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "stackbook/peers/engine.hpp"
+#include "stackbook/peers/sweep_peers.hpp"
+#include "stackbook/scene/sweep.hpp"
+
+using namespace stackbook;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kSweeps = std::string(STACKBOOK_SOURCE_DIR) + "/docs/sweeps/";
+
+fs::path peerScratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("stackbook_ch11_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string peerSpecError(const std::string& peers) {
+  const fs::path dir = peerScratch("peer_spec_error");
+  const fs::path spec = dir / "bad.json";
+  std::ofstream(spec) << R"({"scene": ")" << kSweeps << R"(incline_stop_2d.json", "knobs": [{"key": "dt", "values": [0.01]}],
+    "errors": [{"quantity": "position", "body": 1}], "peers": )" << peers << "}";
+  try {
+    loadSweepSpec(spec.string());
+  } catch (const SceneError& e) {
+    const std::string what = e.what();
+    CHECK(what.find('\n') == std::string::npos);
+    return what.substr(spec.string().size());
+  }
+  FAIL("no error for " << peers);
+  return "";
+}
+
+/// The incline's closed form (the scene's description): a = g (mu cos - sin), d = v0^2 / (2 a).
+double inclineDistance() {
+  const double g = 9.81, theta = 20.0 * M_PI / 180.0, mu = 0.5, v0 = 3.0;
+  return v0 * v0 / (2.0 * g * (mu * std::cos(theta) - std::sin(theta)));
+}
+
+/// Runs the incline sweep restricted to two time steps for stackbook and the peer, and checks
+/// both against the first-order bound: the slide ends within one step, so its distance is
+/// short by between 0 and one step's travel at the launch speed, v0 dt (Eq. (11.3)).
+void checkInclinePeer(const std::string& sweep, const std::string& label) {
+  SweepSpec spec = loadSweepSpec(kSweeps + sweep);
+  spec.knobs = {{"dt", {1.0 / 60.0, 1.0 / 240.0}}};
+  spec.peers.at(0).knobs = {{"dt", {1.0 / 60.0, 1.0 / 240.0}}};
+  const std::vector<SweepRun> runs = sweepRuns(spec);
+  REQUIRE(runs.size() == 4);
+  CHECK(runs[0].engine == "stackbook");
+  CHECK(runs[2].engine.rfind(label, 0) == 0);
+  CHECK(runs[2].index == 2);
+  CHECK(runs[2].config == "-");
+  const double d = inclineDistance(), v0 = 3.0;
+  CHECK(spec.errors[0].expected == doctest::Approx(d).epsilon(1e-15));
+  for (const std::size_t first : {std::size_t{0}, std::size_t{2}}) {
+    const SweepRow coarse = runSweepRun(spec, runs[first]), fine = runSweepRun(spec, runs[first + 1]);
+    INFO(runs[first].engine);
+    CHECK(coarse.errors[0] <= v0 * (1.0 / 60.0) / d);
+    CHECK(fine.errors[0] <= v0 * (1.0 / 240.0) / d);
+    CHECK(fine.errors[0] < 0.5 * coarse.errors[0]);  // first order: a quarter of the step, under half the error
+    CHECK(coarse.steps == 180);
+  }
+}
+
+}  // namespace
+
+TEST_SUITE(STACKBOOK_CHAPTER) {
+
+TEST_CASE("the peers of a sweep are checked like the rest of the spec: one line naming the field") {
+  CHECK(peerSpecError(R"([{"engine": "havok", "knobs": [{"key": "dt", "values": [0.01]}]}])") ==
+        ": /peers/0/engine: unknown peer \"havok\" (box2d or bullet)");
+  CHECK(peerSpecError(R"([{"engine": "box2d", "knobs": [{"key": "velocityIteration", "values": [8]}]}])") ==
+        ": /peers/0/knobs/0/key: \"velocityIteration\" is not a knob of box2d (did you mean \"velocityIterations\"?)");
+  CHECK(peerSpecError(R"([{"engine": "bullet", "knobs": [{"key": "velocityIterations", "values": [8]}]}])") ==
+        ": /peers/0/knobs/0/key: \"velocityIterations\" is not a knob of bullet (dt, iterations)");
+  CHECK(peerSpecError(R"([{"engine": "box2d", "knobs": [{"key": "dt", "values": [0.01]}, {"key": "positionIterations", "values": [0]}]}])") ==
+        ": /peers/0/knobs/1/values/0: must be an integer >= 1, got 0");
+  CHECK(peerSpecError(R"([{"engine": "box2d", "knob": []}])") == ": /peers/0/knob: unknown field (did you mean \"knobs\"?)");
+}
+
+TEST_CASE("a peer runs after the runs of stackbook or is skipped with one note when it is not built") {
+  peers::registerSweepPeers();
+  const SweepSpec spec = loadSweepSpec(kSweeps + "stack_2d_sweep.json");
+  const std::vector<SweepRun> runs = sweepRuns(spec);
+  const std::size_t ours = 5 * 2 * 2, theirs = peers::haveBox2d() ? 5 * 2 : 0;
+  REQUIRE(runs.size() == ours + theirs);
+  for (std::size_t k = 0; k < ours; ++k) CHECK(runs[k].peer == -1);
+  for (std::size_t k = ours; k < runs.size(); ++k) {
+    CHECK(runs[k].peer == 0);
+    CHECK(runs[k].index == k);
+  }
+  const std::vector<std::string> notes = sweepNotes(spec);
+  CHECK(notes.size() == (peers::haveBox2d() ? 0U : 1U));
+  for (const std::string& note : notes) CHECK(note.find("libbox2d-dev") != std::string::npos);
+}
+
+TEST_CASE("Box2D and stackbook slide and stop on the same incline and both are first order in the time step") {
+  peers::registerSweepPeers();
+  if (!peers::haveBox2d()) {
+    MESSAGE("Box2D is not built (libbox2d-dev): only stackbook's rows are checked");
+    return;
+  }
+  checkInclinePeer("incline_stop_2d_sweep.json", "Box2D");
+}
+
+TEST_CASE("Bullet and stackbook slide and stop on the same incline and both are first order in the time step") {
+  peers::registerSweepPeers();
+  if (!peers::haveBullet()) {
+    MESSAGE("Bullet is not built (libbullet-dev): only stackbook's rows are checked");
+    return;
+  }
+  checkInclinePeer("incline_stop_3d_sweep.json", "Bullet");
+}
+
+TEST_CASE("drift and sag are distances across and along gravity from the start for every engine") {
+  SweepTrajectory t;
+  t.dimension = 3;
+  t.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
+  t.isStatic = {true, false};
+  t.times = {0.0, 1.0};
+  t.frames.resize(2, std::vector<SweepBodyState>(2));
+  t.frames[0][1].position = Eigen::Vector3d(0.0, 0.0, 0.5);
+  t.frames[1][1].position = Eigen::Vector3d(0.003, -0.004, 0.498);
+  t.frames[1][0].position = Eigen::Vector3d(9.0, 9.0, 9.0);  // static: never counted
+  t.energies = {0.0, 0.0};
+  SweepError drift;
+  drift.name = "drift";
+  drift.quantity = "drift";
+  SweepError sag = drift;
+  sag.name = "sag";
+  sag.quantity = "sag";
+  sag.body = 1;
+  CHECK(measureSweepTrajectory(drift, t, "x") == doctest::Approx(0.005).epsilon(1e-12));
+  CHECK(measureSweepTrajectory(sag, t, "x") == doctest::Approx(0.002).epsilon(1e-12));
+  t.frames[1][1].position.z() = 0.503;  // rising is as far from standing still as sinking
+  CHECK(measureSweepTrajectory(sag, t, "x") == doctest::Approx(0.003).epsilon(1e-12));
+  sag.body = 2;
+  CHECK_THROWS_WITH(measureSweepTrajectory(sag, t, "spec.json"),
+                    "spec.json: error \"sag\": body 2 is not in the scene (2 bodies)");
+
+  // The peers run scenes of boxes: anything else is one line naming the body.
+  const Scene ball = loadScene(kSweeps + "slide_roll_3d.json");
+  CHECK_THROWS_WITH(peers::boxSceneOf(ball, "slide_roll_3d.json"),
+                    "slide_roll_3d.json: /bodies/1: the peers run scenes of boxes only");
+}
+
+TEST_CASE("the checked-in results of the chapter's sweeps are what the command makes: a sample re-run") {
+  peers::registerSweepPeers();
+  for (const std::string name : {"incline_stop_2d", "incline_stop_3d", "stack_2d", "stack_3d"}) {
+    const SweepSpec spec = loadSweepSpec(kSweeps + name + "_sweep.json");
+    const std::vector<SweepRun> runs = sweepRuns(spec);
+    const auto rows = readSweepCsv(kSweeps + "results/" + name + ".csv");
+    REQUIRE_MESSAGE(rows.size() >= 2, name);
+    CHECK(rows[0].size() == 9 + spec.errors.size());
+    // The cheapest run of each engine (its largest time step): the first stackbook row and the
+    // first peer row, when that peer is built.
+    std::vector<std::size_t> sample = {1};
+    for (std::size_t r = 1; r < rows.size(); ++r) {
+      if (rows[r][2] != "stackbook") {
+        if (spec.peers.empty() || findSweepPeer(spec.peers[0].engine) != nullptr) sample.push_back(r);
+        break;
+      }
+    }
+    for (const std::size_t r : sample) {
+      const std::size_t index = std::stoul(rows[r][0]);
+      REQUIRE(index < runs.size());
+      const SweepRow row = runSweepRun(spec, runs[index]);
+      const fs::path csv = peerScratch("sample") / "row.csv";
+      std::ofstream(csv) << sweepCsvHeader(spec) << sweepCsvLine(spec, row);
+      const auto again = readSweepCsv(csv.string()).at(1);
+      INFO(name << " run " << index);
+      CHECK(again[2] == rows[r][2]);
+      CHECK(again[3] == rows[r][3]);
+      CHECK(again[5] == rows[r][5]);
+      CHECK(again[6] == rows[r][6]);
+      // The errors are deterministic (one thread, no timing in them); the costs are not.
+      for (std::size_t e = 9; e < again.size(); ++e) CHECK(again[e] == rows[r][e]);
+    }
+  }
+}
+
+}  // TEST_SUITE
