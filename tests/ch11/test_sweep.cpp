@@ -157,6 +157,22 @@ TEST_CASE("the time step's error is first order: halving dt halves the height er
   CHECK(e2 / e1 == doctest::Approx(2.0).epsilon(1e-6));
 }
 
+TEST_CASE("the windowed self-consistency error of a fall is the first-order gap g T (dt - dt / refine) / 2") {
+  // Each window restarts both runs from the fine state: the velocity is exact in both, and
+  // over a window T the positions part by g T dt / 2 - g T (dt / refine) / 2 (Eq. (11.3)).
+  const fs::path dir = sweepScratch("sweep_windowed");
+  write(dir / "fall.json", kFallScene);
+  write(dir / "windowed.json", R"({"scene": "fall.json", "knobs": [{"key": "dt", "values": [0.004, 0.002]}],
+    "errors": [{"name": "windowed", "quantity": "windowed", "windows": 3, "window": 0.02, "refine": 8}]})");
+  const SweepSpec spec = loadSweepSpec((dir / "windowed.json").string());
+  const std::vector<SweepRun> runs = sweepRuns(spec);
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const double dt = k == 0 ? 0.004 : 0.002;
+    CHECK(runSweepRun(spec, runs[k]).errors[0] ==
+          doctest::Approx(10.0 * 0.02 * (dt - dt / 8.0) / 2.0).epsilon(1e-9));
+  }
+}
+
 TEST_CASE("the chapter's sweep specs load and and their expected values are the closed forms") {
   const std::string dir = std::string(STACKBOOK_SOURCE_DIR) + "/docs/sweeps/";
   const double v0 = 5.0, mu = 0.2, g = 9.81;

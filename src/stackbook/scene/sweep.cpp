@@ -16,6 +16,8 @@
 #include <thread>
 
 #include "stackbook/output/output_files.hpp"
+#include "stackbook/stacking/shock_propagation.hpp"
+#include "stackbook/stepping/traditional_step.hpp"
 
 namespace stackbook {
 
@@ -25,7 +27,8 @@ namespace {
 
 const std::vector<std::string> kQuantities = {"position",       "velocity",    "angularVelocity",
                                               "energyDrift",    "maxPenetration", "rollingStart",
-                                              "flipPeriod",     "drift",       "sag"};
+                                              "flipPeriod",     "drift",       "sag",
+                                              "windowed"};
 
 /// The peers a spec may name and each one's knobs (whether or not this program has them built).
 const std::vector<std::pair<std::string, std::vector<std::string>>> kPeerKnobs = {
@@ -155,7 +158,8 @@ SweepSpec parseSweepSpec(const json& doc, const std::string& file) {
     const std::string p = "/errors/" + std::to_string(k);
     const json& e = errors[k];
     if (!e.is_object()) throw SceneError(file, p, "must be an object {\"name\": ..., \"quantity\": ...}");
-    rejectUnknown(e, {"name", "quantity", "body", "axis", "radius", "tolerance", "expected", "relative", "within", "unit"},
+    rejectUnknown(e, {"name", "quantity", "body", "axis", "radius", "tolerance", "expected", "relative", "within", "unit",
+                     "windows", "window", "refine"},
                   p, file);
     SweepError out;
     out.quantity = requireString(require(e, "quantity", p, file), p + "/quantity", file);
@@ -164,7 +168,7 @@ SweepSpec parseSweepSpec(const json& doc, const std::string& file) {
       throw SceneError(file, p + "/quantity",
                        "unknown quantity \"" + out.quantity + "\"" +
                            (close.empty() ? std::string(" (position, velocity, angularVelocity, energyDrift, "
-                                                        "maxPenetration, rollingStart, flipPeriod, drift, sag)")
+                                                        "maxPenetration, rollingStart, flipPeriod, drift, sag, windowed)")
                                           : " (did you mean \"" + close + "\"?)"));
     }
     out.name = e.contains("name") ? requireString(e.at("name"), p + "/name", file) : out.quantity;
@@ -205,6 +209,18 @@ SweepSpec parseSweepSpec(const json& doc, const std::string& file) {
       }
     }
     if (e.contains("unit")) out.unit = requireString(e.at("unit"), p + "/unit", file);
+    if (e.contains("windows")) {
+      out.windows = requireIndex(e.at("windows"), p + "/windows", file);
+      if (out.windows < 1) throw SceneError(file, p + "/windows", "must be >= 1");
+    }
+    if (e.contains("window")) {
+      out.window = requireNumber(e.at("window"), p + "/window", file);
+      if (!(out.window > 0.0)) throw SceneError(file, p + "/window", "must be > 0");
+    }
+    if (e.contains("refine")) {
+      out.refine = requireIndex(e.at("refine"), p + "/refine", file);
+      if (out.refine < 2) throw SceneError(file, p + "/refine", "must be >= 2 (the fine run's step is dt / refine)");
+    }
     for (const SweepError& earlier : spec.errors) {
       if (earlier.name == out.name) throw SceneError(file, p + "/name", "\"" + out.name + "\" is already an error's name");
     }
@@ -432,6 +448,8 @@ double measureSweepTrajectory(const SweepError& e, const SweepTrajectory& t, con
       const Eigen::Vector3d d = t.frames[last][k].position - t.frames[0][k].position;
       value = std::max(value, (d - d.dot(up) * up).norm());
     }
+  } else if (e.quantity == "windowed") {
+    throw SceneError(file, "", "error \"" + e.name + "\": the windowed error restarts stackbook's step; a peer's run has no such measure");
   } else if (e.quantity == "sag") {
     bodyCheck();
     value = std::abs((t.frames[0][b].position - t.frames[last][b].position).dot(up));
@@ -511,6 +529,30 @@ double measureError(const SweepError& e, const RunResult<D>& r, const Scene& sce
       value = flips.size() >= 2 ? 2.0 * (flips.back() - flips.front()) / static_cast<double>(flips.size() - 1)
                                 : std::numeric_limits<double>::infinity();
     }
+  } else if (e.quantity == "windowed") {
+    // Erez, Tassa and Todorov's self-consistency (ICRA 2015): a fine run at dt / refine goes
+    // on through all windows; each window restarts the run's own step from the fine state and
+    // compares the two at the window's end, so that sensitivity to the start is not error.
+    World<D> fine = std::get<SceneBodies<D>>(scene.bodies).world;
+    StepSettings coarseSettings = scene.settings, fineSettings = scene.settings;
+    coarseSettings.contactRecorder = nullptr;
+    fineSettings.contactRecorder = nullptr;
+    fineSettings.dt = scene.settings.dt / static_cast<double>(e.refine);
+    const auto steps = std::max<std::int64_t>(1, std::llround(e.window / scene.settings.dt));
+    const PostContactHook<D> hook = shockPropagationHook<D>();
+    double sum = 0.0;
+    for (int w = 0; w < e.windows; ++w) {
+      World<D> coarse = fine;
+      for (std::int64_t n = 0; n < steps; ++n) step<D>(coarse, coarseSettings, hook);
+      for (std::int64_t n = 0; n < steps * e.refine; ++n) step<D>(fine, fineSettings, hook);
+      double worst = 0.0;
+      for (std::size_t k = 0; k < fine.bodies.size(); ++k) {
+        if (fine.bodies[k].isStatic()) continue;
+        worst = std::max(worst, (coarse.bodies[k].position - fine.bodies[k].position).norm());
+      }
+      sum += worst;
+    }
+    value = sum / static_cast<double>(e.windows);
   } else if (e.quantity == "drift" || e.quantity == "sag") {
     // The same definitions as measureSweepTrajectory()'s, on the recorded poses.
     const World<D>& world = std::get<SceneBodies<D>>(scene.bodies).world;

@@ -39,6 +39,10 @@ struct SweepKnob {
 ///   from its start, at the end (m);
 /// - `sag`: how far body `body`'s centre moved along gravity from its start, at the end (m;
 ///   sinking and rising alike, since standing still is the answer).
+/// - `windowed`: the self-consistency error of Erez, Tassa and Todorov (ICRA 2015): the mean
+///   over `windows` windows of `window` seconds of the largest distance between a dynamic
+///   body's centre in the run and in a run at dt / `refine`, each window restarted from the
+///   fine run's state (m); chaos is then not counted as error.
 /// With `expected` given the error is |value - expected|, divided by |expected| when
 /// `relative` (the default), else the value itself.
 struct SweepError {
@@ -55,6 +59,9 @@ struct SweepError {
   /// errors as fractions (1e-2 is 1 %), absolute ones in `unit`.
   std::vector<double> within = {1e-2, 1e-3, 1e-4};
   std::string unit;  ///< of an absolute error, e.g. "m" (shown in the table)
+  int windows = 10;      ///< `windowed`: how many windows
+  double window = 0.1;   ///< `windowed`: each window's length (s)
+  int refine = 16;       ///< `windowed`: the fine run's step is dt / refine
 };
 
 /// A peer engine's runs in a sweep: the engine (`box2d` in 2D, `bullet` in 3D) and its own
