@@ -20,6 +20,7 @@
 #include "stackbook/output/animated_gltf.hpp"
 #include "stackbook/output/animated_svg.hpp"
 #include "stackbook/output/contacts_csv.hpp"
+#include "stackbook/output/output_files.hpp"
 #include "stackbook/output/trajectory_csv.hpp"
 #include "stackbook/output/viewer_html.hpp"
 #include "stackbook/scene/scene.hpp"
@@ -37,16 +38,18 @@ constexpr const char* kDemoScene = "pyramid_2d";
 
 const char* scenesDir() { return STACKBOOK_SCENES_DIR; }
 
+/// One line on stderr: any byte a user put in a path or a name is escaped (printable()).
 int reportError(const std::string& message, int code) {
-  std::cerr << "stackbook: error: " << message << "\n";
+  std::string line = printable(message);
+  std::cerr << "stackbook: error: " << line << "\n";
   return code;
 }
 
 /// The loader's notes (what it repaired) and warnings (what is approximate), one line
 /// each on stderr, also with --quiet: they say the run is not exactly the scene's files.
 void printNotes(const Scene& scene) {
-  for (const std::string& note : scene.notes) std::cerr << "stackbook: note: " << note << "\n";
-  for (const std::string& warning : scene.warnings) std::cerr << "stackbook: warning: " << warning << "\n";
+  for (const std::string& note : scene.notes) std::cerr << "stackbook: note: " << printable(note) << "\n";
+  for (const std::string& warning : scene.warnings) std::cerr << "stackbook: warning: " << printable(warning) << "\n";
 }
 
 /// A scene argument: an existing file, else a bundled scene by name (with or without
@@ -95,6 +98,28 @@ class ProgressBar {
   std::chrono::steady_clock::time_point last_{};
 };
 
+/// The output folder, created and tried with a small file before anything is simulated:
+/// "" if it can be written, else the reason (one line naming the folder).
+std::string probeOutputFolder(const fs::path& out) {
+  std::error_code ec;
+  const std::string name = "--out " + out.string();
+  if (fs::exists(out, ec) && !fs::is_directory(out, ec)) return name + ": exists and is not a folder";
+  fs::create_directories(out, ec);
+  if (ec) return name + ": cannot create the folder: " + ec.message();
+  const fs::path probe = out / (".stackbook-probe-" + std::to_string(::getpid()));
+  {
+    std::ofstream file(probe, std::ios::binary | std::ios::trunc);
+    file << "probe\n";
+    file.close();
+    if (!file) {
+      fs::remove(probe, ec);
+      return name + ": cannot write files in the folder";
+    }
+  }
+  fs::remove(probe, ec);
+  return "";
+}
+
 /// Writes every output of `run` into `out` and returns the paths written.
 std::vector<std::string> writeOutputs(const Scene& scene, const SceneRun& run, const fs::path& out,
                                       const nlohmann::json& summary) {
@@ -141,9 +166,9 @@ std::vector<std::string> writeOutputs(const Scene& scene, const SceneRun& run, c
   files.push_back(summaryPath);
   nlohmann::json full = summary;
   full["files"] = files;
-  std::ofstream file(summaryPath);
-  file << full.dump(2) << "\n";
-  if (!file) throw std::runtime_error("cannot write " + summaryPath);
+  // A path may hold bytes that are not UTF-8: written as U+FFFD rather than failing.
+  output_detail::writeFileOrThrow("summary", summaryPath,
+                                  full.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
   return files;
 }
 
@@ -179,6 +204,7 @@ int runCommand(const RunArgs& args, bool demo) {
   }
   printNotes(scene);
   const fs::path out = args.out.empty() ? fs::path("stackbook-out") / fs::path(path).stem() : fs::path(args.out);
+  if (const std::string problem = probeOutputFolder(out); !problem.empty()) return reportError(problem, kBadInput);
   try {
     ProgressBar bar(!args.quiet && isatty(fileno(stderr)) != 0, std::ceil(scene.duration / scene.settings.dt - 1e-9));
     RunOptions options;

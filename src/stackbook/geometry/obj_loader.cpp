@@ -94,8 +94,17 @@ std::vector<Vec3> checkObjLines(const std::string& text, const std::string& sour
         double value = 0.0;
         if (!parseNumber(tokens[k], value)) {
           std::ostringstream msg;
-          msg << where.str() << ": malformed vertex: coordinate " << k << " ('" << tokens[k]
-              << "') is not a number";
+          msg << where.str() << ": malformed vertex: coordinate " << k << " ('" << tokens[k] << "') ";
+          // A number out of the range of a double says so, too large or too small.
+          errno = 0;
+          char* end = nullptr;
+          const double x = std::strtod(tokens[k].c_str(), &end);
+          if (end != tokens[k].c_str() && *end == '\0' && errno == ERANGE) {
+            msg << (std::abs(x) > 1.0 ? "is beyond the range of a double (about 1.8e308)"
+                                      : "is too small for a normal double (below about 2.2e-308); write 0");
+          } else {
+            msg << "is not a number";
+          }
           fail(source, msg.str());
         }
         if (!std::isfinite(value)) {

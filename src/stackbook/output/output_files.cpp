@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -12,15 +13,26 @@
 namespace stackbook::output_detail {
 
 void writeFileOrThrow(const std::string& writer, const std::string& path, const std::string& bytes) {
+  // Written under a temporary name in the same folder and renamed, so that a failed write
+  // never leaves a half-written file under the real name.
+  const std::string part = path + ".part";
   errno = 0;
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  std::ofstream out(part, std::ios::binary | std::ios::trunc);
   if (!out) {
     const std::string reason = errno != 0 ? std::strerror(errno) : "cannot open for writing";
     throw std::runtime_error(writer + ": cannot write '" + path + "': " + reason);
   }
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   out.close();
-  if (!out) throw std::runtime_error(writer + ": cannot write '" + path + "': write failed");
+  if (!out) {
+    std::remove(part.c_str());
+    throw std::runtime_error(writer + ": cannot write '" + path + "': write failed");
+  }
+  if (std::rename(part.c_str(), path.c_str()) != 0) {
+    const std::string reason = std::strerror(errno);
+    std::remove(part.c_str());
+    throw std::runtime_error(writer + ": cannot write '" + path + "': " + reason);
+  }
 }
 
 std::string readFileOrThrow(const std::string& reader, const std::string& path) {

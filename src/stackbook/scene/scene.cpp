@@ -4,6 +4,8 @@
 // docs/scene_format.md.
 #include "stackbook/scene/scene.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "stackbook/scene/scene_bodies.hpp"
@@ -16,8 +18,9 @@ using scene_detail::describeValue;
 using scene_detail::member;
 using scene_detail::Reader;
 
-Scene parseScene(const json& doc, const std::string& file, const std::filesystem::path& baseDir) {
-  const Reader r(file);
+Scene parseScene(const json& doc, const std::string& file, const std::filesystem::path& baseDir,
+                 const SceneLimits& limits) {
+  const Reader r(file, limits);
   r.requireObject(doc, "",
                   {"description", "dimension", "gravity", "dt", "duration", "solver", "effects", "output",
                    "materials", "bodies", "allowOverlap"},
@@ -33,7 +36,12 @@ Scene parseScene(const json& doc, const std::string& file, const std::filesystem
   if (const json* v = member(doc, "description")) scene.description = r.string(*v, "/description");
   if (const json* v = member(doc, "dt")) scene.settings.dt = r.positive(*v, "/dt");
   if (const json* v = member(doc, "duration")) scene.duration = r.positive(*v, "/duration");
-  if (scene.duration / scene.settings.dt > 1e9) r.fail("/duration", "duration / dt must be at most 1e9 steps");
+  const double steps = std::ceil(scene.duration / scene.settings.dt - 1e-9);
+  if (!(steps <= limits.steps)) {
+    r.fail(member(doc, "dt") != nullptr ? "/dt" : "/duration",
+           "duration / dt is " + scene_detail::formatNumber(steps) + " steps; at most " +
+               scene_detail::formatNumber(limits.steps));
+  }
   if (const json* v = member(doc, "allowOverlap")) scene.allowOverlap = r.boolean(*v, "/allowOverlap");
   if (const json* v = member(doc, "solver")) scene_detail::readSolver(r, *v, scene.settings);
   if (const json* v = member(doc, "effects")) scene_detail::readEffects(r, *v, scene.settings.effects);
@@ -62,13 +70,44 @@ Scene parseScene(const json& doc, const std::string& file, const std::filesystem
     scene.notes = b.notes;
     scene.warnings = b.warnings;
   }, scene.bodies);
+  // The work of the run and the memory of its recording, estimated here so that what
+  // `check` accepts, `run` can finish (docs/scene_format.md, "Limits").
+  const double bodies = scene.bodyCount();
+  const char* timeField = member(doc, "dt") != nullptr ? "/dt" : "/duration";
+  if (!(steps * bodies <= limits.bodySteps)) {
+    r.fail(timeField, "the run is " + scene_detail::formatNumber(steps) + " steps x " + scene_detail::formatNumber(bodies) +
+                          " bodies = " + scene_detail::formatNumber(steps * bodies) + " body-steps; at most " +
+                          scene_detail::formatNumber(limits.bodySteps));
+  }
+  // Frames: one per 1/frameRate, at most one per step, and the first and the last.
+  const double frames = std::min(steps, std::ceil(scene.duration * scene.output.frameRate)) + 2.0;
+  if (!(frames * bodies <= limits.frameBodies)) {
+    r.fail(member(doc, "output") != nullptr && member(*member(doc, "output"), "frameRate") != nullptr
+               ? "/output/frameRate"
+               : "/duration",
+           "the recording would hold " + scene_detail::formatNumber(frames) + " frames x " +
+               scene_detail::formatNumber(bodies) + " bodies; at most " + scene_detail::formatNumber(limits.frameBodies) +
+               " (lower the frame rate or the duration)");
+  }
+  if (steps * bodies > limits.longRunBodySteps) {
+    scene.warnings.push_back(printable(file) + ": " + timeField + ": a long run: " + scene_detail::formatNumber(steps) +
+                             " steps x " + scene_detail::formatNumber(bodies) + " bodies = " +
+                             scene_detail::formatNumber(steps * bodies) + " body-steps");
+  }
   return scene;
 }
 
-Scene loadScene(const std::string& path, const std::vector<std::string>& overrides) {
-  json doc = readSceneJson(path);
-  for (const std::string& o : overrides) applySceneOverride(doc, o, path);
-  return parseScene(doc, path, std::filesystem::path(path).parent_path());
+Scene loadSceneText(const std::string& text, const std::string& file, const std::filesystem::path& baseDir,
+                    const std::vector<std::string>& overrides, const SceneLimits& limits) {
+  json doc = parseSceneJsonText(text, file, limits);
+  for (const std::string& o : overrides) applySceneOverride(doc, o, file, limits);
+  return parseScene(doc, file, baseDir, limits);
+}
+
+Scene loadScene(const std::string& path, const std::vector<std::string>& overrides, const SceneLimits& limits) {
+  json doc = readSceneJson(path, limits);
+  for (const std::string& o : overrides) applySceneOverride(doc, o, path, limits);
+  return parseScene(doc, path, std::filesystem::path(path).parent_path(), limits);
 }
 
 }  // namespace stackbook

@@ -94,26 +94,68 @@ struct Scene {
 };
 // [scene]
 
+// [scene_limits]
+/// The limits that protect the machine from a scene (docs/scene_format.md, "Limits"):
+/// each is checked where the scene is read, before anything large is built or run, and
+/// breaking one is a SceneError naming the field. The defaults are the program's; a fuzz
+/// target lowers the work limits so that one input runs in a fraction of a second.
+struct SceneLimits {
+  int jsonDepth = 64;                  ///< nesting of arrays and objects in the JSON text
+  std::size_t fileBytes = 64u << 20;   ///< size of a scene file
+  double numberMagnitude = 1e12;       ///< |x| of any number in a scene
+  double smallestPositive = 1e-12;     ///< least value of a size, mass, density, dt, ...
+  long long bodies = 100'000;          ///< bodies in a scene, arrays counted
+  double steps = 1e9;                  ///< duration / dt
+  double bodySteps = 1e11;             ///< steps x bodies
+  double longRunBodySteps = 1e8;       ///< steps x bodies above which the program warns
+  double frameBodies = 5e7;            ///< recorded frames x bodies (the recording's memory)
+  long long startPairs = 1'000'000;    ///< pairs of bounding boxes that overlap at the start
+  long long meshVertices = 1'000'000;  ///< vertices of a generated or loaded surface mesh
+  std::size_t meshFileBytes = 256u << 20;  ///< size of a mesh file
+  int sdfResolution3 = 256;            ///< largest sdfResolution in 3D
+  int sdfResolution2 = 1024;           ///< largest sdfResolution in 2D
+};
+// [scene_limits]
+
 /// Reads, checks and builds the scene in `path`. Each entry of `overrides` is
 /// "key=value" (the --set option of the program): key is a path into the JSON separated
 /// by '.' or '/', e.g. `dt`, `solver.contactIterations`, `bodies.2.velocity`, and value is
 /// JSON (a bare word that is not JSON is taken as a string). Overrides are applied before
 /// the checks, so they are checked like the file. Throws SceneError.
-Scene loadScene(const std::string& path, const std::vector<std::string>& overrides = {});
+Scene loadScene(const std::string& path, const std::vector<std::string>& overrides = {},
+                const SceneLimits& limits = {});
+
+/// The same for the text of a scene file already read (`file` names it in messages,
+/// `baseDir` is where mesh files are looked up): what loadScene() does after reading the
+/// file, and the body of the scene loader's fuzz target. Throws SceneError only.
+Scene loadSceneText(const std::string& text, const std::string& file, const std::filesystem::path& baseDir,
+                    const std::vector<std::string>& overrides = {}, const SceneLimits& limits = {});
 
 /// The same for a JSON document already read: `file` names it in messages and `baseDir`
 /// is where mesh files are looked up. Throws SceneError.
 Scene parseScene(const nlohmann::json& document, const std::string& file,
-                 const std::filesystem::path& baseDir);
+                 const std::filesystem::path& baseDir, const SceneLimits& limits = {});
 
 /// The JSON of a scene file, with syntax errors reported as a SceneError with the line
-/// and column in the reason.
-nlohmann::json readSceneJson(const std::string& path);
+/// and column in the reason. Nesting deeper than limits.jsonDepth, a number beyond the
+/// range of a double and a key given twice in one object are errors too (with the JSON
+/// pointer where they are).
+nlohmann::json readSceneJson(const std::string& path, const SceneLimits& limits = {});
+
+/// The same for text already read; `file` names it in messages.
+nlohmann::json parseSceneJsonText(const std::string& text, const std::string& file, const SceneLimits& limits = {});
 
 /// Applies one "key=value" override to `document` (see loadScene()). Throws SceneError
-/// naming `file` if the text has no '=' or the key is empty.
+/// naming `file` and the key's pointer if the text has no '=', the key is empty, a part
+/// of the key walks into a number or string or past the end of an array (an index may be
+/// at most the array's size, which appends), or the value is nested too deep or is not
+/// valid UTF-8.
 void applySceneOverride(nlohmann::json& document, const std::string& keyValue,
-                        const std::string& file);
+                        const std::string& file, const SceneLimits& limits = {});
+
+/// `text` printable on one line: control characters and bytes that are not valid UTF-8
+/// become \xNN (a path or name from the user may hold any byte string).
+std::string printable(const std::string& text);
 
 /// Levenshtein distance: single-character insertions, deletions and substitutions.
 std::size_t editDistance(const std::string& a, const std::string& b);

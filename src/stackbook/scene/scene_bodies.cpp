@@ -3,6 +3,7 @@
 // each other. See scene_bodies.hpp and docs/scene_format.md.
 #include "stackbook/scene/scene_bodies.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <initializer_list>
@@ -247,10 +248,21 @@ void addBodies(const Reader& r, const json& body, const std::string& ptr,
       rigid = makeStaticBody<D>();
     } else {
       const double scale = bodyMass / shape.measure;  // Eq. (10.1)
+      // The field the mass properties come from: "mass" or "density" with the shape.
+      const std::string massField = mass != nullptr ? ptr + "/mass" : density != nullptr ? ptr + "/density" : ptr + "/shape";
+      const AngVec<D> moments = scale * shape.unitMoments;
+      if (!(std::isfinite(bodyMass) && bodyMass > 0.0 && std::isfinite(1.0 / bodyMass))) {
+        r.fail(massField, "gives the body a mass of " + formatNumber(bodyMass) +
+                              " kg, which the step cannot use (its inverse must be finite and > 0)");
+      }
+      if (!(moments.allFinite() && (moments.array() > 0.0).all() && moments.cwiseInverse().allFinite())) {
+        r.fail(massField, "gives the body principal moments of inertia that the step cannot use (each must be "
+                          "finite and > 0 with a finite inverse); check the shape's size and the mass");
+      }
       try {
-        rigid = makeDynamicBody<D>(bodyMass, AngVec<D>(scale * shape.unitMoments));
+        rigid = makeDynamicBody<D>(bodyMass, moments);
       } catch (const std::exception& e) {
-        r.fail(ptr, e.what());
+        r.fail(massField, e.what());
       }
     }
     rigid.position = placement.toWorld(shape.frame.position);  // Eq. (10.2)
@@ -262,6 +274,19 @@ void addBodies(const Reader& r, const json& body, const std::string& ptr,
     if (!isStatic) {
       rigid.velocity = v;
       rigid.setAngularVelocity(omega);
+    }
+    bool poseFinite = rigid.position.allFinite();
+    if constexpr (D == 2) {
+      poseFinite = poseFinite && std::isfinite(rigid.orientation.angle());
+    } else {
+      poseFinite = poseFinite && rigid.orientation.coeffs().allFinite();
+    }
+    if (!poseFinite) r.fail(suffix.empty() ? ptr + "/position" : ptr + "/array/spacing", "gives a position that is not finite");
+    if (!(rigid.angularMomentum.allFinite() && rigid.velocity.allFinite())) {
+      r.fail(ptr + "/angularVelocity", "gives an angular momentum that is not finite (too large for the body's inertia)");
+    }
+    if (static_cast<long long>(out.world.size()) >= r.limits().bodies) {
+      r.fail(ptr, "the scene has more than " + std::to_string(r.limits().bodies) + " bodies (the limit of the scene format)");
     }
     out.world.addBody(rigid, shape.shape, material);
     BodyVisual<D> visual;
@@ -276,12 +301,60 @@ void addBodies(const Reader& r, const json& body, const std::string& ptr,
   // [place_body]
 }
 
+/// The pairs of bodies whose bounding boxes (about each body's position, a sphere's box
+/// holding its shape) overlap at the start, not both static; fails past the limit, which
+/// bounds the work of the start-overlap check and of the first step's broad phase.
+template <int D>
+std::vector<std::pair<std::size_t, std::size_t>> startPairs(const Reader& r, const SceneBodies<D>& b) {
+  const World<D>& w = b.world;
+  const std::size_t n = w.bodies.size();
+  std::vector<double> radius(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Aabb<D> box = w.shapes[i]->bounds();
+    radius[i] = std::max(box.lower.norm(), box.upper.norm());
+  }
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  const auto low = [&](std::size_t i) { return w.bodies[i].position[0] - radius[i]; };
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t c) { return low(a) < low(c); });
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  const auto limit = static_cast<std::size_t>(r.limits().startPairs);
+  for (std::size_t a = 0; a < n; ++a) {
+    const std::size_t i = order[a];
+    const double high = w.bodies[i].position[0] + radius[i];
+    for (std::size_t c = a + 1; c < n && low(order[c]) <= high; ++c) {
+      const std::size_t j = order[c];
+      if (w.bodies[i].isStatic() && w.bodies[j].isStatic()) continue;
+      bool overlap = true;
+      for (int k = 1; k < D && overlap; ++k) {
+        overlap = std::abs(w.bodies[i].position[k] - w.bodies[j].position[k]) <= radius[i] + radius[j];
+      }
+      if (!overlap) continue;
+      pairs.emplace_back(i, j);
+      if (pairs.size() > limit) {
+        r.fail(b.pointers[j], "more than " + std::to_string(limit) +
+                                  " pairs of bodies are within reach of each other at the start (the limit of the "
+                                  "scene format); spread the bodies out");
+      }
+    }
+  }
+  return pairs;
+}
+
 /// Rejects bodies that start inside each other (unless the scene allows it): the deepest
 /// surface sample of one body inside another must be within a tolerance of the surface,
-/// 1e-6 plus half a cell for a grid shape (whose phi is only that accurate).
+/// 1e-6 plus half a cell for a grid shape (whose phi is only that accurate), and no two
+/// bodies may each have their centre inside the other (two identical bodies at one place
+/// have no surface sample inside each other).
 template <int D>
-void checkStartOverlap(const Reader& r, const SceneBodies<D>& b) {
+void checkStartOverlap(const Reader& r, const SceneBodies<D>& b,
+                       const std::vector<std::pair<std::size_t, std::size_t>>& pairs) {
   const World<D>& w = b.world;
+  const auto tolerance = [&](std::size_t j) {
+    double t = 1e-6;
+    if (const auto* grid = dynamic_cast<const GridShape<D>*>(w.shapes[j].get())) t += 0.5 * grid->grid().cellSize();
+    return t;
+  };
   std::vector<CollisionBody<D>> views;
   for (std::size_t i = 0; i < w.bodies.size(); ++i) views.push_back(collisionBody<D>(w.bodies[i], *w.shapes[i]));
   // The deepest sample beyond its tolerance, so that the message gives the real overlap.
@@ -289,10 +362,9 @@ void checkStartOverlap(const Reader& r, const SceneBodies<D>& b) {
   std::vector<PairInterference<D>> found = detectInterference<D>(views);
   for (const PairInterference<D>& pair : found) {
     for (const InterferenceSample<D>& s : pair.samples) {
-      const Shape<D>* other = w.shapes[static_cast<std::size_t>(s.other)].get();
-      double tolerance = 1e-6;
-      if (const auto* grid = dynamic_cast<const GridShape<D>*>(other)) tolerance += 0.5 * grid->grid().cellSize();
-      if (-s.depth > tolerance && (worst == nullptr || s.depth < worst->depth)) worst = &s;
+      if (-s.depth > tolerance(static_cast<std::size_t>(s.other)) && (worst == nullptr || s.depth < worst->depth)) {
+        worst = &s;
+      }
     }
   }
   if (worst != nullptr) {
@@ -300,6 +372,20 @@ void checkStartOverlap(const Reader& r, const SceneBodies<D>& b) {
     r.fail(b.pointers[owner], "body \"" + b.visuals[owner].name + "\" starts " + formatNumber(-worst->depth) +
                                   " inside body \"" + b.visuals[inside].name + "\" (" + b.pointers[inside] +
                                   "); move it or set \"allowOverlap\": true");
+  }
+  // Whether body i's centre is inside body j.
+  const auto centreInside = [&](std::size_t i, std::size_t j) {
+    const Pose<D> pose{w.bodies[j].position, w.bodies[j].orientation};
+    const Vec<D> local = pose.toBody(w.bodies[i].position);
+    return w.shapes[j]->bounds().contains(local) && w.shapes[j]->signedDistance(local) < -tolerance(j);
+  };
+  // Each centre inside the other (a ring's centre may be around a peg that does not touch it).
+  for (const auto& [i, j] : pairs) {
+    if (centreInside(i, j) && centreInside(j, i)) {
+      r.fail(b.pointers[j], "body \"" + b.visuals[j].name + "\" and body \"" + b.visuals[i].name + "\" (" +
+                                b.pointers[i] + ") start with each centre inside the other; move one or set "
+                                "\"allowOverlap\": true");
+    }
   }
 }
 
@@ -318,7 +404,8 @@ SceneBodies<D> buildBodies(const Reader& r, const json& doc, const std::map<std:
   for (std::size_t i = 0; i < bodies->size(); ++i) {
     addBodies<D>(r, (*bodies)[i], "/bodies/" + std::to_string(i), materials, baseDir, shapes, out);
   }
-  if (!allowOverlap) checkStartOverlap<D>(r, out);
+  const auto pairs = startPairs<D>(r, out);
+  if (!allowOverlap) checkStartOverlap<D>(r, out, pairs);
   return out;
 }
 

@@ -29,7 +29,8 @@ std::string formatNumber(double x);
 /// Reads the parts of one scene file; every failure is a SceneError with this file's name.
 class Reader {
  public:
-  explicit Reader(std::string file) : file_(std::move(file)) {}
+  explicit Reader(std::string file, const SceneLimits& limits = {}) : file_(std::move(file)), limits_(limits) {}
+  const SceneLimits& limits() const { return limits_; }
 
   [[noreturn]] void fail(const std::string& pointer, const std::string& reason) const {
     throw SceneError(file_, pointer, reason);
@@ -42,7 +43,7 @@ class Reader {
     if (!v.is_object()) fail(ptr, "expected " + what + " (a JSON object), got " + describeValue(v));
     for (const auto& item : v.items()) {
       if (std::find(allowed.begin(), allowed.end(), item.key()) != allowed.end()) continue;
-      std::string reason = "unknown field \"" + item.key() + "\" in " + what;
+      std::string reason = "unknown field \"" + printable(item.key()) + "\" in " + what;
       const std::string hint = closestName(item.key(), allowed);
       if (!hint.empty()) {
         reason += "; did you mean \"" + hint + "\"?";
@@ -58,11 +59,19 @@ class Reader {
     if (!v.is_number()) fail(ptr, "expected a number, got " + describeValue(v));
     const double x = v.get<double>();
     if (!std::isfinite(x)) fail(ptr, "must be a finite number");
+    if (!(std::abs(x) <= limits_.numberMagnitude)) {
+      fail(ptr, "must be at most " + formatNumber(limits_.numberMagnitude) + " in magnitude (a limit of the scene format), got " +
+                    formatNumber(x));
+    }
     return x;
   }
   double positive(const json& v, const std::string& ptr) const {
     const double x = number(v, ptr);
     if (!(x > 0.0)) fail(ptr, "must be > 0, got " + formatNumber(x));
+    if (x < limits_.smallestPositive) {
+      fail(ptr, "must be at least " + formatNumber(limits_.smallestPositive) + " (a limit of the scene format), got " +
+                    formatNumber(x));
+    }
     return x;
   }
   double nonNegative(const json& v, const std::string& ptr) const {
@@ -80,6 +89,11 @@ class Reader {
   }
   int integer(const json& v, const std::string& ptr, int least, int most = 1'000'000'000) const {
     if (!v.is_number_integer()) fail(ptr, "expected an integer, got " + describeValue(v));
+    // An unsigned value beyond the signed range is larger than any limit (not negative).
+    if (v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(most)) {
+      fail(ptr, "must be an integer in [" + std::to_string(least) + ", " + std::to_string(most) + "], got " +
+                    std::to_string(v.get<std::uint64_t>()));
+    }
     const auto x = v.get<std::int64_t>();
     if (x < least || x > most) {
       fail(ptr, "must be an integer in [" + std::to_string(least) + ", " + std::to_string(most) +
@@ -110,13 +124,19 @@ class Reader {
   Eigen::Matrix<double, N, 1> positiveVector(const json& v, const std::string& ptr) const {
     const Eigen::Matrix<double, N, 1> out = vector<N>(v, ptr);
     for (int k = 0; k < N; ++k) {
-      if (!(out[k] > 0.0)) fail(ptr + "/" + std::to_string(k), "must be > 0, got " + formatNumber(out[k]));
+      const std::string at = ptr + "/" + std::to_string(k);
+      if (!(out[k] > 0.0)) fail(at, "must be > 0, got " + formatNumber(out[k]));
+      if (out[k] < limits_.smallestPositive) {
+        fail(at, "must be at least " + formatNumber(limits_.smallestPositive) + " (a limit of the scene format), got " +
+                     formatNumber(out[k]));
+      }
     }
     return out;
   }
 
  private:
   std::string file_;
+  SceneLimits limits_;
 };
 
 /// The member `key` of object `obj`, or nullptr.

@@ -147,7 +147,8 @@ BuiltShape<D> buildShape(const Reader& r, const json& spec, const std::string& p
   const auto resolution = [&]() {
     const json* v = member(spec, "sdfResolution");
     // 256 cells in 3D is a 17-million-node grid that takes tens of seconds to build (chapter 6).
-    return v == nullptr ? 32 : r.integer(*v, ptr + "/sdfResolution", 4, D == 2 ? 1024 : 256);
+    const int most = D == 2 ? r.limits().sdfResolution2 : r.limits().sdfResolution3;
+    return v == nullptr ? std::min(32, most) : r.integer(*v, ptr + "/sdfResolution", 4, most);
   };
 
   // The surface sample density of an analytic shape (chapter 11): "samples" is the
@@ -238,6 +239,18 @@ BuiltShape<D> buildShape(const Reader& r, const json& spec, const std::string& p
   if (type == "L") {
     return meshShape<D>(lShapeBoundary<D>(optionalPositive("cellSize", 0.5)), "L", resolution());
   }
+  // A revolved outline (cup, bone) has one profile point per `spacing` of its outline and
+  // 48 copies of it around the axis in 3D: estimated before it is built, so that a long
+  // bone fails here rather than filling the memory.
+  const auto requireProfileSize = [&](const char* field, double outline, double spacing) {
+    const double points = outline / spacing + 8.0;
+    const double vertices = points * (D == 3 ? 48.0 : 2.0);
+    if (!(vertices <= static_cast<double>(r.limits().meshVertices))) {
+      r.fail(ptr + "/" + field, "the " + type + "'s surface would have about " + formatNumber(std::ceil(vertices)) +
+                                    " vertices (one every " + formatNumber(spacing) + " along its outline); at most " +
+                                    std::to_string(r.limits().meshVertices));
+    }
+  };
   if (type == "U" || type == "cup") {
     CupDimensions cup;
     cup.outerRadius = optionalPositive("outerRadius", cup.outerRadius);
@@ -246,6 +259,8 @@ BuiltShape<D> buildShape(const Reader& r, const json& spec, const std::string& p
     cup.bottomThickness = optionalPositive("bottomThickness", cup.bottomThickness);
     if (!(cup.wallThickness < cup.outerRadius)) r.fail(ptr + "/wallThickness", "must be smaller than outerRadius");
     if (!(cup.bottomThickness < cup.height)) r.fail(ptr + "/bottomThickness", "must be smaller than height");
+    requireProfileSize(cup.height >= cup.outerRadius ? "height" : "outerRadius",
+                       4.0 * (cup.outerRadius + cup.height), 0.05);
     return meshShape<D>(cupBoundary<D>(cup), type, resolution());
   }
   if (type == "bone") {
@@ -254,6 +269,8 @@ BuiltShape<D> buildShape(const Reader& r, const json& spec, const std::string& p
     bone.neckRadius = optionalPositive("neckRadius", bone.neckRadius);
     bone.length = optionalPositive("length", bone.length);
     if (!(bone.neckRadius <= bone.ballRadius)) r.fail(ptr + "/neckRadius", "must be at most ballRadius");
+    requireProfileSize(bone.length >= bone.ballRadius ? "length" : "ballRadius",
+                       2.0 * M_PI * bone.ballRadius + bone.length, 0.04);
     return meshShape<D>(boneBoundary<D>(bone), "bone", resolution());
   }
   if constexpr (D == 2) {
@@ -272,6 +289,11 @@ BuiltShape<D> buildShape(const Reader& r, const json& spec, const std::string& p
       std::error_code ec;
       if (!std::filesystem::is_regular_file(path, ec)) {
         r.fail(ptr + "/file", "no such mesh file: " + path.string());
+      }
+      const auto bytes = std::filesystem::file_size(path, ec);
+      if (!ec && bytes > r.limits().meshFileBytes) {
+        r.fail(ptr + "/file", "the mesh file has " + std::to_string(bytes) + " bytes; at most " +
+                                  std::to_string(r.limits().meshFileBytes));
       }
       // [scene_mesh_mode]
       // "meshMode": strict (the default) takes the file as it is or rejects it; repair
@@ -306,8 +328,19 @@ BuiltShape<D> buildShape(const Reader& r, const json& spec, const std::string& p
       } catch (const std::exception& e) {
         r.fail(ptr + "/file", std::string("the mesh cannot be used: ") + e.what());
       }
+      if (static_cast<long long>(mesh.vertices.size()) > r.limits().meshVertices) {
+        r.fail(ptr + "/file", "the mesh has " + std::to_string(mesh.vertices.size()) + " vertices; at most " +
+                                  std::to_string(r.limits().meshVertices));
+      }
       const double scale = optionalPositive("scale", 1.0);
-      for (Vec3& v : mesh.vertices) v *= scale;
+      for (Vec3& v : mesh.vertices) {
+        v *= scale;
+        if (!(v.allFinite() && v.cwiseAbs().maxCoeff() <= r.limits().numberMagnitude)) {
+          r.fail(member(spec, "scale") != nullptr ? ptr + "/scale" : ptr + "/file",
+                 "a vertex of the mesh (scaled) is beyond " + formatNumber(r.limits().numberMagnitude) +
+                     " in magnitude (a limit of the scene format)");
+        }
+      }
       if (mode == MeshMode::Strict) return meshShape<3>(std::move(mesh), name, resolution());
       const MeshRepairReport report = repairMesh(mesh, repair);
       if (mesh.faces.empty()) r.fail(ptr + "/file", "the mesh cannot be used: no face is left after repair");

@@ -36,7 +36,8 @@ std::string oneLine(const std::string& text) {
 
 SceneError::SceneError(const std::string& file, const std::string& pointer,
                        const std::string& reason)
-    : std::runtime_error(file + ": " + (pointer.empty() ? std::string() : pointer + ": ") + oneLine(reason)),
+    : std::runtime_error(printable(file) + ": " + (pointer.empty() ? std::string() : printable(pointer) + ": ") +
+                         printable(oneLine(reason))),
       file_(file), pointer_(pointer), reason_(oneLine(reason)) {}
 
 int Scene::bodyCount() const {
@@ -95,7 +96,8 @@ std::string escapePointerToken(const std::string& key) {
 
 /// A short account of a JSON value for "got ..." in messages.
 std::string describeValue(const json& v) {
-  std::string text = v.dump();
+  // Only scalars are printed (the document's depth is limited, but a message needs no more).
+  std::string text = v.is_structured() ? std::string() : v.dump(-1, ' ', false, json::error_handler_t::replace);
   if (text.size() > 40) text = text.substr(0, 37) + "...";
   switch (v.type()) {
     case json::value_t::null: return "null";

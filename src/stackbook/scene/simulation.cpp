@@ -39,7 +39,7 @@ std::int64_t frameStep(std::int64_t frame, double frameRate, double dt) {
   // Steps per frame r = 1/(frameRate dt); the product f r is rounded up, less a relative
   // 1e-9 so that a rounding error in r (1000 * 0.001 is not always exactly 1) never pushes a
   // frame to the next step.
-  const double at = static_cast<double>(frame) / (frameRate * dt);
+  const double at = std::min(static_cast<double>(frame) / (frameRate * dt), 4e18);  // no int64 overflow
   return std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(at - 1e-9 * std::max(1.0, at))));
 }
 
@@ -89,6 +89,9 @@ RunResult<D> runBodies(const Scene& scene, const SceneBodies<D>& bodies, const R
   // [run_loop]
   const PostContactHook<D> hook = shockPropagationHook<D>();
   std::int64_t frame = 1;
+  // At most one frame per step: a frame rate above 1/dt records every step (as it would
+  // anyway) without counting the frames between two steps one by one.
+  const double frameRate = std::min(scene.output.frameRate, 1.0 / settings.dt);
   for (std::int64_t n = 1; n <= steps; ++n) {
     result.counters += step<D>(world, settings, hook);
     const double t = static_cast<double>(n) * settings.dt;
@@ -98,16 +101,19 @@ RunResult<D> runBodies(const Scene& scene, const SceneBodies<D>& bodies, const R
     }
     // Frames at multiples of 1/frameRate (the step that reaches each one, counted in whole
     // steps), and the end: Eq. (10.3).
-    if (n >= frameStep(frame, scene.output.frameRate, settings.dt) || n == steps) {
+    if (n >= frameStep(frame, frameRate, settings.dt) || n == steps) {
       measure(t);
-      while (frameStep(frame, scene.output.frameRate, settings.dt) <= n) ++frame;
+      while (frameStep(frame, frameRate, settings.dt) <= n) ++frame;
     }
     if (options.progress) options.progress(static_cast<double>(n) / static_cast<double>(steps), t);
   }
   // [run_loop]
   result.simulatedSeconds = static_cast<double>(steps) * settings.dt;
   result.energyEnd = worldEnergy<D>(world);
-  result.finite = worldFinite<D>(world);
+  // Finite: the state and the energies (a state near the limits of a double can be finite
+  // while its energy overflows, and a run that cannot report its energy did not succeed).
+  result.finite = worldFinite<D>(world) && std::isfinite(result.energyStart.total()) &&
+                  std::isfinite(result.energyEnd.total());
   result.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -1,0 +1,226 @@
+// Chapter 10: bad input as users (and fuzzers) bring it. Every input of the regression
+// corpus (tests/ch10/corpus) gives the built `stackbook` one line on stderr naming the
+// file and the JSON pointer, and exit code 2, within a bound on time (the command runs
+// under `timeout`, so a hang fails the exit-code check rather than the test run); and
+// every corpus file runs through the fuzz targets' bodies (tests/support/fuzz_inputs.hpp)
+// as an ordinary test.
+#include <doctest/doctest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "stackbook/scene/scene.hpp"
+#include "support/fuzz_inputs.hpp"
+
+namespace bad_inputs {
+
+namespace fs = std::filesystem;
+
+const fs::path kCorpus = fs::path(STACKBOOK_TEST_DATA_DIR).parent_path() / "corpus";
+
+fs::path programPath() {
+  fs::path dir = fs::read_symlink("/proc/self/exe").parent_path();
+  for (; !dir.empty() && dir != dir.root_path(); dir = dir.parent_path()) {
+    const fs::path candidate = dir / "stackbook";
+    std::error_code ec;
+    if (fs::is_regular_file(candidate, ec)) return candidate;
+  }
+  return {};
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+struct Outcome {
+  int code = -1;
+  std::string err;
+};
+
+/// Runs `stackbook ARGUMENTS` in `workDir` under `timeout 120` (exit 124 if it hangs).
+Outcome runProgram(const std::string& arguments, const fs::path& workDir) {
+  const fs::path program = programPath();
+  REQUIRE_MESSAGE(!program.empty(), "the stackbook program is not built (target stackbook_program)");
+  const fs::path scratch = fs::temp_directory_path() / "stackbook_ch10_bad_inputs";
+  fs::create_directories(scratch);
+  const fs::path err = scratch / ("stderr_" + std::to_string(::getpid()) + ".txt");
+  const std::string command = "cd '" + workDir.string() + "' && timeout 120 '" + program.string() + "' " + arguments +
+                              " >/dev/null 2>'" + err.string() + "'";
+  const int status = std::system(command.c_str());
+  Outcome o;
+  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  o.err = slurp(err);
+  return o;
+}
+
+/// A bad input: the corpus scene, the arguments after it, and the pointer the line names.
+struct BadInput {
+  const char* scene;
+  const char* arguments;
+  const char* pointer;
+};
+
+// [bad_inputs]
+const BadInput kBadInputs[] = {
+    // 1. nesting: refused at the depth limit, not a stack overflow
+    {"deep_nesting.json", "", "/duration/0/0/0"},
+    {"set_base.json", "--set \"duration=$(printf '%.0s[' $(seq 1000))\"", "/duration"},
+    // 2. the library's words never reach the user
+    {"number_overflow.json", "", "/duration"},
+    {"set_base.json", "--set dt=1e999", "/dt"},
+    {"set_base.json", "--set bodies.x.name=a", "/bodies/x"},
+    {"set_base.json", "--set bodies.-1.name=a", "/bodies/-1"},
+    {"set_base.json", "--set 'a~b=1'", "/a~b"},
+    {"set_base.json", "--set dt.x=1", "/dt/x"},
+    {"set_base.json", "--set \"$(printf 'bodies.1.name=\\377\\376')\"", "/bodies/1/name"},
+    {"set_base.json", "--set \"$(printf 'description=\\377')\"", "/description"},
+    {"invalid_utf8_name.json", "", "line 1"},
+    // 3. a frame rate that used to hang the run
+    {"huge_frame_rate.json", "", "/output/frameRate"},
+    {"frames_memory.json", "", "/output/frameRate"},
+    // 4. memory and time: estimated before anything large is built or run
+    {"long_bone.json", "", "/bodies/1/shape/length"},
+    {"bone_1e300.json", "", "/bodies/1/shape/length"},
+    {"identical_bodies.json", "", "/bodies/2"},
+    {"overlap_pairs.json", "", "/bodies/1"},
+    {"too_many_steps.json", "", "/dt"},
+    {"too_many_body_steps.json", "", "/dt"},
+    // 5. what check accepts, run runs: derived quantities checked at the boundary
+    {"tiny_size.json", "", "/bodies/1/shape/size/0"},
+    {"tiny_mass.json", "", "/bodies/1/mass"},
+    {"huge_quaternion.json", "", "/bodies/1/quaternion/2"},
+    {"huge_angular_velocity.json", "", "/bodies/1/angularVelocity"},
+    {"huge_gravity.json", "", "/gravity/1"},
+    {"huge_angle.json", "", "/bodies/1/angleDeg"},
+    {"huge_spacing.json", "", "/bodies/1/array/spacing/0"},
+    // 6. silent wrong results
+    {"huge_axis.json", "", "/bodies/1/axis/0"},
+    {"huge_velocity.json", "", "/bodies/1/velocity/0"},
+    // 7. misleading messages
+    {"unsigned_integer.json", "", "/solver/contactIterations"},
+    {"obj_subnormal.json", "", "/bodies/1/shape/file"},
+    {"obj_overflow.json", "", "/bodies/1/shape/file"},
+    // 8. outputs and keys
+    {"duplicate_key.json", "", "/dt"},
+    {"set_base.json", "--set bodies.1000000000.name=x", "/bodies/1000000000"},
+    {"set_base.json", "--set bodies.5.name=x", "/bodies/5"},
+    {"obj_self_intersecting.json", "", "/bodies/1/shape/file"},
+    {"control_in_key.json", "", "/dura\\x0ation"},
+};
+// [bad_inputs]
+
+/// What the line must say about each input, beyond the file and the pointer.
+void checkOneLine(const Outcome& o, const std::string& file, const std::string& pointer) {
+  CHECK(o.code == 2);
+  CHECK(std::count(o.err.begin(), o.err.end(), '\n') == 1);
+  CHECK(o.err.rfind("stackbook: error: " + file + ": ", 0) == 0);
+  CHECK(o.err.find(pointer) != std::string::npos);
+  CHECK(o.err.find("json.exception") == std::string::npos);
+  CHECK(std::none_of(o.err.begin(), o.err.end() - 1, [](char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return u < 0x20 || u == 0x7F || u >= 0x80;  // the corpus's messages are ASCII once escaped
+  }));
+}
+
+std::vector<fs::path> corpusFiles(const char* folder) {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(kCorpus / folder)) files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace bad_inputs
+
+TEST_SUITE(STACKBOOK_CHAPTER) {
+
+using namespace bad_inputs;  // NOLINT(google-build-using-namespace)
+namespace fs = std::filesystem;
+
+TEST_CASE("every bad input of the corpus gives check and run one line with the file and the pointer and exit 2") {
+  for (const BadInput& input : kBadInputs) {
+    for (const char* command : {"check", "run -q --out /tmp/stackbook_ch10_bad_inputs/out"}) {
+      const std::string scene = input.scene, arguments = input.arguments, how = command;
+      CAPTURE(scene);
+      CAPTURE(arguments);
+      CAPTURE(how);
+      const Outcome o = runProgram(std::string(command) + " " + input.scene + " " + input.arguments, kCorpus / "scene");
+      checkOneLine(o, input.scene, input.pointer);
+    }
+  }
+}
+
+TEST_CASE("a scene path that is not UTF-8 is escaped in the error line and written as U+FFFD in summary.json") {
+  const fs::path dir = fs::temp_directory_path() / "stackbook_ch10_bad_inputs" / "bad\xff" "dir";
+  fs::create_directories(dir);
+  fs::copy_file(kCorpus / "scene" / "set_base.json", dir / "s.json", fs::copy_options::overwrite_existing);
+  const Outcome bad = runProgram("check 'bad\xff" "dir/s.json' --set dt=-1", dir.parent_path());
+  checkOneLine(bad, "bad\\xffdir/s.json", "/dt");
+  const Outcome good = runProgram("run -q 'bad\xff" "dir/s.json' --out out_utf8", dir.parent_path());
+  CHECK(good.code == 0);
+  const std::string summary = slurp(dir.parent_path() / "out_utf8" / "summary.json");
+  CHECK(summary.find("bad\xef\xbf\xbd" "dir/s.json") != std::string::npos);
+}
+
+TEST_CASE("--out is probed before the run: an existing file or a folder under a file is one line and exit 2") {
+  const fs::path dir = fs::temp_directory_path() / "stackbook_ch10_bad_inputs";
+  fs::create_directories(dir);
+  { std::ofstream(dir / "a_file") << "x"; }
+  const std::string scene = (kCorpus / "scene" / "set_base.json").string();
+  for (const char* out : {"a_file", "a_file/sub"}) {
+    CAPTURE(out);
+    const Outcome o = runProgram("run -q '" + scene + "' --out " + out, dir);
+    CHECK(o.code == 2);
+    CHECK(std::count(o.err.begin(), o.err.end(), '\n') == 1);
+    CHECK(o.err.rfind(std::string("stackbook: error: --out ") + out + ": ", 0) == 0);
+  }
+  // A good run leaves complete files only: no temporary name is left behind.
+  const Outcome ok = runProgram("run -q '" + scene + "' --out good", dir);
+  CHECK(ok.code == 0);
+  for (const auto& entry : fs::directory_iterator(dir / "good")) {
+    CHECK(entry.path().extension() != ".part");
+    CHECK(entry.path().filename().string().rfind(".stackbook-probe", 0) != 0);
+  }
+}
+
+TEST_CASE("every scene of the corpus goes through the scene fuzz target's body without a finding") {
+  for (const fs::path& file : corpusFiles("scene")) {
+    if (file.extension() != ".json" && file.extension() != ".set") continue;
+    CAPTURE(file.filename().string());
+    CHECK(stackbook::fuzz::sceneInput(slurp(file), kCorpus / "scene") == "");
+  }
+}
+
+TEST_CASE("every mesh of the corpus goes through the OBJ fuzz target's body without a finding") {
+  for (const fs::path& file : corpusFiles("obj")) {
+    CAPTURE(file.filename().string());
+    CHECK(stackbook::fuzz::objInput(slurp(file)) == "");
+  }
+}
+
+TEST_CASE("a frame rate far above 1/dt records every step and the run ends") {
+  const Outcome o = runProgram("run -q fast_frames.json --out /tmp/stackbook_ch10_bad_inputs/fast", kCorpus / "scene");
+  CHECK(o.code == 0);
+  CHECK(o.err.empty());
+}
+
+TEST_CASE("--set may append to an array (index = size) but never pads it") {
+  nlohmann::json doc = nlohmann::json::parse(R"({"bodies": [{}, {}]})");
+  stackbook::applySceneOverride(doc, "bodies.2.name=x", "f.json");
+  CHECK(doc["bodies"].size() == 3);
+  CHECK(doc["bodies"][2]["name"] == "x");
+  CHECK_THROWS_AS(stackbook::applySceneOverride(doc, "bodies.9.name=x", "f.json"), stackbook::SceneError);
+  CHECK(doc["bodies"].size() == 3);
+}
+
+}  // TEST_SUITE
