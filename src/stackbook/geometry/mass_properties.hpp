@@ -178,12 +178,6 @@ MassProperties<D> computeMassProperties(const SurfaceMesh<D>& mesh, double densi
     }
   }
   const double scale = std::pow(box.extent().norm(), D);
-  if (!std::isfinite(scale) || !std::isfinite(measure) || !second.allFinite()) {
-    std::ostringstream msg;
-    msg << context << ": the mesh is too large for its " << (D == 3 ? "volume" : "area")
-        << " and moments to be finite doubles (extent " << box.extent().norm() << ")";
-    throw std::invalid_argument(msg.str());
-  }
   if (!(measure > settings.flatnessTolerance * scale)) {
     std::ostringstream msg;
     msg << context << ": the enclosed " << (D == 3 ? "volume" : "area") << " is " << measure
