@@ -154,7 +154,7 @@ void applySceneOverride(nlohmann::json& document, const std::string& keyValue,
                         const std::string& file, const SceneLimits& limits = {});
 
 /// `text` printable on one line: control characters and bytes that are not valid UTF-8
-/// become \xNN (a path or name from the user may hold any byte string).
+/// become `\xNN` (a path or name from the user may hold any byte string).
 std::string printable(const std::string& text);
 
 /// Levenshtein distance: single-character insertions, deletions and substitutions.
