@@ -5,6 +5,7 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -241,9 +242,21 @@ TriangleMesh parseObjMesh(const std::string& text, const std::string& sourceName
             << " vertices after triangulation";
         fail(sourceName, msg.str());
       }
-      mesh.faces.push_back({shape.mesh.indices[offset].vertex_index,
-                            shape.mesh.indices[offset + 1].vertex_index,
-                            shape.mesh.indices[offset + 2].vertex_index});
+      std::array<int, 3> face{};
+      for (std::size_t k = 0; k < 3; ++k) {
+        // checkObjLines checked the face lines it recognised; a line that the two readers
+        // tokenise differently (a byte the checker takes for part of a word, say) must not
+        // reach the mesh with an index outside its vertices.
+        const int index = shape.mesh.indices[offset + k].vertex_index;
+        if (index < 0 || static_cast<std::size_t>(index) >= positions.size()) {
+          std::ostringstream msg;
+          msg << "object '" << shape.name << "' face " << f << " refers to vertex " << index + 1
+              << " of " << positions.size() << " (a face line this reader could not check)";
+          fail(sourceName, msg.str());
+        }
+        face[k] = index;
+      }
+      mesh.faces.push_back(face);
       offset += count;
     }
   }
