@@ -1,67 +1,36 @@
 // Chapter 10: bad input as users (and fuzzers) bring it. Every input of the regression
 // corpus (tests/ch10/corpus) gives the built `stackbook` one line on stderr naming the
-// file and the JSON pointer, and exit code 2, within a bound on time (the command runs
+// file and the JSON pointer, and exit code 1, within a bound on time (the command runs
 // under `timeout`, so a hang fails the exit-code check rather than the test run); and
 // every corpus file runs through the fuzz targets' bodies (tests/support/fuzz_inputs.hpp)
 // as an ordinary test.
 #include <doctest/doctest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "stackbook/scene/scene.hpp"
 #include "support/fuzz_inputs.hpp"
+#include "support/run_program.hpp"
 
 namespace bad_inputs {
 
 namespace fs = std::filesystem;
+using stackbook::test_support::kExitBadInput;
+using stackbook::test_support::kExitOk;
+using Outcome = stackbook::test_support::ProgramOutcome;
 
 const fs::path kCorpus = fs::path(STACKBOOK_TEST_DATA_DIR).parent_path() / "corpus";
 
-fs::path programPath() {
-  fs::path dir = fs::read_symlink("/proc/self/exe").parent_path();
-  for (; !dir.empty() && dir != dir.root_path(); dir = dir.parent_path()) {
-    const fs::path candidate = dir / "stackbook";
-    std::error_code ec;
-    if (fs::is_regular_file(candidate, ec)) return candidate;
-  }
-  return {};
-}
+std::string slurp(const fs::path& p) { return stackbook::test_support::slurpFile(p); }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-struct Outcome {
-  int code = -1;
-  std::string err;
-};
-
-/// Runs `stackbook ARGUMENTS` in `workDir` under `timeout 120` (exit 124 if it hangs).
+/// Runs `stackbook ARGUMENTS` in `workDir`; a bad input must be answered well within 120 s
+/// (a hang ends as exit 124, a failed exit-code check).
 Outcome runProgram(const std::string& arguments, const fs::path& workDir) {
-  const fs::path program = programPath();
-  REQUIRE_MESSAGE(!program.empty(), "the stackbook program is not built (target stackbook_program)");
-  const fs::path scratch = fs::temp_directory_path() / "stackbook_ch10_bad_inputs";
-  fs::create_directories(scratch);
-  const fs::path err = scratch / ("stderr_" + std::to_string(::getpid()) + ".txt");
-  const std::string command = "cd '" + workDir.string() + "' && timeout 120 '" + program.string() + "' " + arguments +
-                              " >/dev/null 2>'" + err.string() + "'";
-  const int status = std::system(command.c_str());
-  Outcome o;
-  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  o.err = slurp(err);
-  return o;
+  return stackbook::test_support::runProgram(arguments, workDir, 120);
 }
 
 /// A bad input: the corpus scene, the arguments after it, and the pointer the line names.
@@ -122,7 +91,7 @@ const BadInput kBadInputs[] = {
 
 /// What the line must say about each input, beyond the file and the pointer.
 void checkOneLine(const Outcome& o, const std::string& file, const std::string& pointer) {
-  CHECK(o.code == 2);
+  CHECK(o.code == kExitBadInput);
   CHECK(std::count(o.err.begin(), o.err.end(), '\n') == 1);
   CHECK(o.err.rfind("stackbook: error: " + file + ": ", 0) == 0);
   CHECK(o.err.find(pointer) != std::string::npos);
@@ -147,7 +116,7 @@ TEST_SUITE(STACKBOOK_CHAPTER) {
 using namespace bad_inputs;  // NOLINT(google-build-using-namespace)
 namespace fs = std::filesystem;
 
-TEST_CASE("every bad input of the corpus gives check and run one line with the file and the pointer and exit 2") {
+TEST_CASE("every bad input of the corpus gives check and run one line with the file and the pointer and exit 1") {
   for (const BadInput& input : kBadInputs) {
     for (const char* command : {"check", "run -q --out /tmp/stackbook_ch10_bad_inputs/out"}) {
       const std::string scene = input.scene, arguments = input.arguments, how = command;
@@ -167,12 +136,12 @@ TEST_CASE("a scene path that is not UTF-8 is escaped in the error line and writt
   const Outcome bad = runProgram("check 'bad\xff" "dir/s.json' --set dt=-1", dir.parent_path());
   checkOneLine(bad, "bad\\xffdir/s.json", "/dt");
   const Outcome good = runProgram("run -q 'bad\xff" "dir/s.json' --out out_utf8", dir.parent_path());
-  CHECK(good.code == 0);
+  CHECK(good.code == kExitOk);
   const std::string summary = slurp(dir.parent_path() / "out_utf8" / "summary.json");
   CHECK(summary.find("bad\xef\xbf\xbd" "dir/s.json") != std::string::npos);
 }
 
-TEST_CASE("--out is probed before the run: an existing file or a folder under a file is one line and exit 2") {
+TEST_CASE("--out is probed before the run: an existing file or a folder under a file is one line and exit 1") {
   const fs::path dir = fs::temp_directory_path() / "stackbook_ch10_bad_inputs";
   fs::create_directories(dir);
   { std::ofstream(dir / "a_file") << "x"; }
@@ -180,13 +149,13 @@ TEST_CASE("--out is probed before the run: an existing file or a folder under a 
   for (const char* out : {"a_file", "a_file/sub"}) {
     CAPTURE(out);
     const Outcome o = runProgram("run -q '" + scene + "' --out " + out, dir);
-    CHECK(o.code == 2);
+    CHECK(o.code == kExitBadInput);
     CHECK(std::count(o.err.begin(), o.err.end(), '\n') == 1);
     CHECK(o.err.rfind(std::string("stackbook: error: --out ") + out + ": ", 0) == 0);
   }
   // A good run leaves complete files only: no temporary name is left behind.
   const Outcome ok = runProgram("run -q '" + scene + "' --out good", dir);
-  CHECK(ok.code == 0);
+  CHECK(ok.code == kExitOk);
   for (const auto& entry : fs::directory_iterator(dir / "good")) {
     CHECK(entry.path().extension() != ".part");
     CHECK(entry.path().filename().string().rfind(".stackbook-probe", 0) != 0);
@@ -210,7 +179,7 @@ TEST_CASE("every mesh of the corpus goes through the OBJ fuzz target's body with
 
 TEST_CASE("a frame rate far above 1/dt records every step and the run ends") {
   const Outcome o = runProgram("run -q fast_frames.json --out /tmp/stackbook_ch10_bad_inputs/fast", kCorpus / "scene");
-  CHECK(o.code == 0);
+  CHECK(o.code == kExitOk);
   CHECK(o.err.empty());
 }
 

@@ -2,46 +2,23 @@
 // stderr for bad input, the files a run writes, the list of bundled scenes, help.
 #include <doctest/doctest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
+
+#include "support/run_program.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-/// The built program: `stackbook` in the build tree, found by walking up from this test
-/// binary (the program is written to the top of the build folder).
-fs::path programPath() {
-  fs::path dir = fs::read_symlink("/proc/self/exe").parent_path();
-  for (; !dir.empty() && dir != dir.root_path(); dir = dir.parent_path()) {
-    const fs::path candidate = dir / "stackbook";
-    std::error_code ec;
-    if (fs::is_regular_file(candidate, ec)) return candidate;
-  }
-  return {};
-}
+using stackbook::test_support::kExitBadInput;
+using stackbook::test_support::kExitOk;
+using Outcome = stackbook::test_support::ProgramOutcome;
 
-struct Outcome {
-  int code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string slurp(const fs::path& p) { return stackbook::test_support::slurpFile(p); }
 
 fs::path scratch() {
   const fs::path dir = fs::temp_directory_path() / "stackbook_ch10_program";
@@ -51,19 +28,8 @@ fs::path scratch() {
 
 /// Runs the program with `arguments` (shell syntax) in `workDir`.
 Outcome run(const std::string& arguments, const fs::path& workDir = scratch()) {
-  const fs::path program = programPath();
-  REQUIRE_MESSAGE(!program.empty(), "the stackbook program is not built (target stackbook_program)");
-  // One pair of files per process: CTest runs the test cases of this file in parallel,
-  // each in its own process, and shared files would mix their outputs.
-  const std::string id = std::to_string(::getpid());
-  const fs::path out = scratch() / ("stdout_" + id + ".txt"), err = scratch() / ("stderr_" + id + ".txt");
-  const std::string command = "cd '" + workDir.string() + "' && '" + program.string() + "' " + arguments + " >'" +
-                              out.string() + "' 2>'" + err.string() + "'";
-  const int status = std::system(command.c_str());
-  Outcome o;
-  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  o.out = slurp(out);
-  o.err = slurp(err);
+  Outcome o = stackbook::test_support::runProgram(arguments, workDir);
+  REQUIRE_MESSAGE(o.code != -1, o.err);
   return o;
 }
 
@@ -75,29 +41,29 @@ TEST_SUITE(STACKBOOK_CHAPTER) {
 
 TEST_CASE("stackbook check accepts a bundled scene by name") {
   const Outcome o = run("check incline");
-  CHECK(o.code == 0);
+  CHECK(o.code == kExitOk);
   CHECK(o.out.find("incline.json: ok (2D, 4 bodies") != std::string::npos);
   CHECK(o.err.empty());
 }
 
-TEST_CASE("stackbook check of a bad scene exits 2 with one error line naming file and pointer") {
+TEST_CASE("stackbook check of a bad scene exits 1 with one error line naming file and pointer") {
   const std::string file = std::string(STACKBOOK_TEST_DATA_DIR) + "/bad_mesh_missing.json";
   const Outcome o = run("check '" + file + "'");
-  CHECK(o.code == 2);
+  CHECK(o.code == kExitBadInput);
   CHECK(lines(o.err) == 1);
   CHECK(o.err.rfind("stackbook: error: " + file + ": /bodies/1/shape/file: no such mesh file", 0) == 0);
 }
 
-TEST_CASE("stackbook run of a missing scene exits 2 with one error line") {
+TEST_CASE("stackbook run of a missing scene exits 1 with one error line") {
   const Outcome o = run("run no_such_scene");
-  CHECK(o.code == 2);
+  CHECK(o.code == kExitBadInput);
   CHECK(lines(o.err) == 1);
   CHECK(o.err.find("no_such_scene: no such scene file") != std::string::npos);
 }
 
-TEST_CASE("An unknown option exits 2 with one error line") {
+TEST_CASE("An unknown option exits 1 with one error line") {
   const Outcome o = run("run incline --speed 3");
-  CHECK(o.code == 2);
+  CHECK(o.code == kExitBadInput);
   CHECK(lines(o.err) == 1);
   CHECK(o.err.find("--speed") != std::string::npos);
 }
@@ -106,7 +72,7 @@ TEST_CASE("stackbook run writes the trajectory and the animation and the summary
   const fs::path out = scratch() / "incline_run";
   fs::remove_all(out);
   const Outcome o = run("run incline --duration 0.02 --set output.frameRate=100 --quiet --out '" + out.string() + "'");
-  CHECK(o.code == 0);
+  CHECK(o.code == kExitOk);
   CHECK(o.err.empty());
   CHECK(fs::is_regular_file(out / "trajectory.csv"));
   CHECK(fs::is_regular_file(out / "animation.svg"));
@@ -126,7 +92,7 @@ TEST_CASE("stackbook run of a 3D scene writes the glTF animation and its viewer 
   const fs::path out = scratch() / "stack3d_run";
   fs::remove_all(out);
   const Outcome o = run("run box_stack_3d --dt 0.002 --duration 0.01 --quiet --out '" + out.string() + "'");
-  CHECK(o.code == 0);
+  CHECK(o.code == kExitOk);
   CHECK(fs::is_regular_file(out / "animation.glb"));
   CHECK(fs::is_regular_file(out / "viewer.html"));
   CHECK_FALSE(fs::exists(out / "animation.svg"));
@@ -139,7 +105,7 @@ TEST_CASE("stackbook run of a 3D scene writes the glTF animation and its viewer 
 TEST_CASE("stackbook run prints the summary with effects and stages and energy and files") {
   const fs::path out = scratch() / "balls_run";
   const Outcome o = run("run bouncing_balls_2d --duration 0.01 --out '" + out.string() + "'");
-  CHECK(o.code == 0);
+  CHECK(o.code == kExitOk);
   for (const char* part : {"5 bodies, 2D, 10 steps", "effects: gravity, collision, restitution", "collision",
                            "contact", "shockPropagation", "max penetration", "energy (kinetic + potential)",
                            "summary.json"}) {
@@ -149,7 +115,7 @@ TEST_CASE("stackbook run prints the summary with effects and stages and energy a
 
 TEST_CASE("stackbook list names every bundled scene with its description") {
   const Outcome o = run("list");
-  CHECK(o.code == 0);
+  CHECK(o.code == kExitOk);
   for (const auto& entry : fs::directory_iterator(STACKBOOK_SCENES_DIR)) {
     if (entry.path().extension() != ".json") continue;
     CHECK_MESSAGE(o.out.find("  " + entry.path().stem().string() + " ") != std::string::npos, entry.path());
@@ -161,7 +127,7 @@ TEST_CASE("Help is available for the program and every command") {
   for (const char* args : {"--help", "run --help", "check --help", "list --help"}) {
     const Outcome o = run(args);
     CAPTURE(args);
-    CHECK(o.code == 0);
+    CHECK(o.code == kExitOk);
     CHECK(o.out.find("Usage") != std::string::npos);
   }
   CHECK(run("run --help").out.find("--set") != std::string::npos);
@@ -176,7 +142,7 @@ TEST_CASE("stackbook without arguments runs the demo and says where its outputs 
   fs::remove_all(dir);
   fs::create_directories(dir);
   const Outcome o = run("", dir);
-  CHECK(o.code == 0);
+  CHECK(o.code == kExitOk);
   CHECK(o.out.find("The demo's outputs are in " + (dir / "stackbook-out").string()) != std::string::npos);
   CHECK(fs::is_regular_file(dir / "stackbook-out" / "pyramid_2d" / "animation.svg"));
 }

@@ -16,6 +16,7 @@
 
 #include "stackbook/body/torque_free.hpp"
 #include "stackbook/scene/sweep.hpp"
+#include "support/run_program.hpp"
 
 using namespace stackbook;
 namespace fs = std::filesystem;
@@ -59,14 +60,7 @@ std::string specError(const std::string& text) {
   return "";
 }
 
-fs::path programPath() {
-  fs::path dir = fs::read_symlink("/proc/self/exe").parent_path();
-  for (; !dir.empty() && dir != dir.root_path(); dir = dir.parent_path()) {
-    std::error_code ec;
-    if (fs::is_regular_file(dir / "stackbook", ec)) return dir / "stackbook";
-  }
-  return {};
-}
+using stackbook::test_support::programPath;
 
 }  // namespace
 
@@ -197,7 +191,7 @@ TEST_CASE("the Pareto front keeps the runs no other run beats on both cost and e
 }
 
 TEST_CASE("stackbook sweep --list prints one independent command line per run and and a bad spec "
-          "is one line on stderr with exit code 2") {
+          "is one line on stderr with exit code 1") {
   const fs::path program = programPath();
   REQUIRE_MESSAGE(!program.empty(), "the stackbook program is not built");
   const fs::path dir = sweepScratch("sweep_list");
@@ -230,7 +224,7 @@ TEST_CASE("stackbook sweep --list prints one independent command line per run an
   const std::string bad = "cd '" + dir.string() + "' && '" + program.string() + "' sweep bad.json >'" + out +
                           "' 2>'" + err + "'";
   const int status = std::system(bad.c_str());
-  CHECK(WEXITSTATUS(status) == 2);
+  CHECK(WEXITSTATUS(status) == stackbook::test_support::kExitBadInput);
   std::ifstream e(err);
   std::string message((std::istreambuf_iterator<char>(e)), std::istreambuf_iterator<char>());
   CHECK(message == "stackbook: error: bad.json: /knobs/0/values: must be a non-empty array\n");
