@@ -13,6 +13,7 @@
 #include "stackbook/output/animated_gltf.hpp"
 #include "stackbook/output/animated_svg.hpp"
 #include "stackbook/output/contacts_csv.hpp"
+#include "stackbook/output/csv.hpp"
 #include "stackbook/scene/scene.hpp"
 #include "stackbook/scene/simulation.hpp"
 #include "stackbook/stacking/shock_propagation.hpp"
@@ -48,20 +49,8 @@ json droppedBoxScene(bool contacts, double frameRate = 50.0) {
               {"bodies", {ground, box}}};
 }
 
-std::vector<std::string> splitCsvLine(const std::string& line) {
-  std::vector<std::string> fields;
-  std::string field;
-  bool quoted = false;
-  for (char c : line) {
-    if (c == '"') quoted = !quoted;
-    else if (c == ',' && !quoted) {
-      fields.push_back(field);
-      field.clear();
-    } else field += c;
-  }
-  fields.push_back(field);
-  return fields;
-}
+/// The fields of one CSV line (the line feed was taken off by getline).
+std::vector<std::string> splitCsvLine(const std::string& line) { return csvRecords(line + "\n").at(0); }
 
 template <int D>
 const RunResult<D>& resultOf(const SceneRun& run) {

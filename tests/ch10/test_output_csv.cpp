@@ -8,6 +8,7 @@
 #include <doctest/doctest.h>
 
 #include "output_fixtures.hpp"
+#include "stackbook/output/csv.hpp"
 #include "stackbook/output/trajectory_csv.hpp"
 #include "support/dimensions.hpp"
 
@@ -15,42 +16,6 @@ using namespace stackbook;
 using namespace stackbook::testing;
 
 namespace {
-
-/// Split a CSV text into records of fields (RFC 4180: quoted fields, doubled quotes).
-std::vector<std::vector<std::string>> parseCsv(const std::string& text) {
-  std::vector<std::vector<std::string>> rows(1);
-  std::string field;
-  bool quoted = false, fieldStarted = false;
-  for (std::size_t k = 0; k < text.size(); ++k) {
-    const char c = text[k];
-    if (quoted) {
-      if (c == '"' && k + 1 < text.size() && text[k + 1] == '"') {
-        field += '"';
-        ++k;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        field += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-      fieldStarted = true;
-    } else if (c == ',') {
-      rows.back().push_back(field);
-      field.clear();
-    } else if (c == '\n') {
-      rows.back().push_back(field);
-      field.clear();
-      rows.emplace_back();
-    } else {
-      field += c;
-      fieldStarted = true;
-    }
-  }
-  (void)fieldStarted;
-  if (rows.back().empty()) rows.pop_back();
-  return rows;
-}
 
 double parseDouble(const std::string& text) {
   char* end = nullptr;
@@ -79,7 +44,7 @@ TEST_CASE_TEMPLATE("The trajectory CSV reads back every recorded pose bit for bi
   const Recording<D> recording = csvRecording<D>();
   const auto path = scratchFolder("csv") / "trajectory.csv";
   writeTrajectoryCsv(recording, path.string());
-  const auto rows = parseCsv(readWhole(path));
+  const auto rows = csvRecords(readWhole(path));
 
   const std::vector<std::string> header =
       D == 2 ? std::vector<std::string>{"time", "body", "name", "x", "y", "angle", "vx", "vy", "omega"}
@@ -118,7 +83,7 @@ TEST_CASE("The trajectory CSV keeps doubles that need seventeen digits") {
   recording.recordPoses(1e-300, {pose});
   const auto path = scratchFolder("csv17") / "odd.csv";
   writeTrajectoryCsv(recording, path.string());
-  const auto rows = parseCsv(readWhole(path));
+  const auto rows = csvRecords(readWhole(path));
   REQUIRE(rows.size() == 2);
   CHECK(parseDouble(rows[1][0]) == 1e-300);
   CHECK(parseDouble(rows[1][3]) == 0.1 + 0.2);
@@ -131,6 +96,27 @@ TEST_CASE("Writing the CSV into a missing folder fails with the path in the mess
   const Recording<2> recording = fallingRecording2D(fewFalls(), 2, 30.0);
   CHECK_THROWS_WITH_AS(writeTrajectoryCsv(recording, path),
                        doctest::Contains(("cannot write '" + path + "'").c_str()), std::runtime_error);
+}
+
+TEST_CASE("CSV fields: quoted only when they must be, and read back unchanged (RFC 4180)") {
+  CHECK(csvField("box") == "box");
+  CHECK(csvField("box, dropped") == "\"box, dropped\"");
+  CHECK(csvField("a \"b\"") == "\"a \"\"b\"\"\"");
+  CHECK(csvField("two\nlines") == "\"two\nlines\"");
+  // The records of a text written by hand as RFC 4180 spells it: a quoted comma, a doubled
+  // quote, a line feed inside quotes, an empty field; the last line has no line feed yet.
+  const std::string text = "a,\"b,c\",\"say \"\"hi\"\"\"\n\"x\ny\",,z\npartial,line";
+  const auto records = csvRecords(text);
+  REQUIRE(records.size() == 2);
+  CHECK(records[0] == std::vector<std::string>{"a", "b,c", "say \"hi\""});
+  CHECK(records[1] == std::vector<std::string>{"x\ny", "", "z"});
+  // Every field csvField writes reads back as itself.
+  const std::vector<std::string> fields{"plain", "", ",", "\"", "\"\"", "a,\"b\"\r\nc", "\xc3\xa9t\xc3\xa9"};
+  std::string line;
+  for (std::size_t k = 0; k < fields.size(); ++k) line += (k ? "," : "") + csvField(fields[k]);
+  const auto back = csvRecords(line + "\n");
+  REQUIRE(back.size() == 1);
+  CHECK(back[0] == fields);
 }
 
 }  // TEST_SUITE

@@ -1,22 +1,9 @@
 #include "stackbook/output/contacts_csv.hpp"
 
+#include "stackbook/output/csv.hpp"
 #include "stackbook/output/output_files.hpp"
 
 namespace stackbook {
-
-namespace {
-
-std::string contactsCsvField(const std::string& text) {
-  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) {
-    if (c == '"') quoted += '"';
-    quoted += c;
-  }
-  return quoted + '"';
-}
-
-}  // namespace
 
 template <int D>
 void writeContactsCsv(const Recording<D>& recording, const std::string& path) {
@@ -26,7 +13,7 @@ void writeContactsCsv(const Recording<D>& recording, const std::string& path) {
   const auto& visuals = recording.visuals();
   const auto name = [&visuals](int body) {
     return body >= 0 && static_cast<std::size_t>(body) < visuals.size()
-               ? contactsCsvField(visuals[static_cast<std::size_t>(body)].name)
+               ? csvField(visuals[static_cast<std::size_t>(body)].name)
                : std::string();
   };
   for (const RecordedContact& rc : recording.contacts()) {

@@ -1,24 +1,9 @@
 #include "stackbook/output/trajectory_csv.hpp"
 
+#include "stackbook/output/csv.hpp"
 #include "stackbook/output/output_files.hpp"
 
 namespace stackbook {
-
-namespace {
-
-/// A CSV field: quoted, with inner quotes doubled, when it holds a separator, a quote or a
-/// line end (RFC 4180).
-std::string csvField(const std::string& text) {
-  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) {
-    if (c == '"') quoted += '"';
-    quoted += c;
-  }
-  return quoted + '"';
-}
-
-}  // namespace
 
 template <int D>
 void writeTrajectoryCsv(const Recording<D>& recording, const std::string& path) {
