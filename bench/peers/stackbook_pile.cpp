@@ -74,16 +74,7 @@ class StackbookPile final : public Engine {
   }
 
   Work work() const override {
-    Work w;
-    const double n = counters_.steps > 0 ? static_cast<double>(counters_.steps) : 1.0;
-    const StageCounters* stages[] = {&counters_.collision, &counters_.contact, &counters_.shock};
-    w.impulses = w.phiQueries = w.pairQueries = 0.0;
-    for (const StageCounters* s : stages) {
-      w.impulses += static_cast<double>(s->impulses) / n;
-      w.phiQueries += static_cast<double>(s->detection.phiQueries) / n;
-      w.pairQueries += static_cast<double>(s->detection.pairQueries) / n;
-    }
-    return w;
+    return workPerStep(counters_);
   }
 
   Accuracy accuracy() const override {

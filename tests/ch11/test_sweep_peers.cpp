@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -162,7 +163,14 @@ TEST_CASE("drift and sag are distances across and along gravity from the start f
 
 TEST_CASE("the checked-in results of the chapter's sweeps are what the command makes: a sample re-run") {
   peers::registerSweepPeers();
-  for (const std::string name : {"incline_stop_2d", "incline_stop_3d", "stack_2d", "stack_3d"}) {
+  // Every checked-in CSV, each with the spec of its name.
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(kSweeps + "results")) {
+    if (entry.path().extension() == ".csv") names.push_back(entry.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  CHECK(names.size() >= 4);
+  for (const std::string& name : names) {
     const SweepSpec spec = loadSweepSpec(kSweeps + name + "_sweep.json");
     const std::vector<SweepRun> runs = sweepRuns(spec);
     const auto rows = readSweepCsv(kSweeps + "results/" + name + ".csv");

@@ -11,6 +11,10 @@
 #include "stackbook/peers/box_scenes.hpp"
 #include "stackbook/peers/measures.hpp"
 
+namespace stackbook {
+struct StepCounters;
+}
+
 namespace peers {
 
 /// Work per step, where the engine counts it (stackbook's StepCounters); negative: not counted.
@@ -19,6 +23,10 @@ struct Work {
   double phiQueries = -1.0;  ///< signed-distance queries per step
   double pairQueries = -1.0; ///< narrow-phase pair queries per step
 };
+
+/// stackbook's work per step from its counters: the collision, contact and shock stages'
+/// impulses, phi queries and pair queries, each divided by the steps counted.
+Work workPerStep(const stackbook::StepCounters& counters);
 
 class Engine {
  public:

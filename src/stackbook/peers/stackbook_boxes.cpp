@@ -8,6 +8,19 @@
 
 namespace peers {
 
+Work workPerStep(const stackbook::StepCounters& counters) {
+  Work w;
+  const double n = counters.steps > 0 ? static_cast<double>(counters.steps) : 1.0;
+  const stackbook::StageCounters* stages[] = {&counters.collision, &counters.contact, &counters.shock};
+  w.impulses = w.phiQueries = w.pairQueries = 0.0;
+  for (const stackbook::StageCounters* s : stages) {
+    w.impulses += static_cast<double>(s->impulses) / n;
+    w.phiQueries += static_cast<double>(s->detection.phiQueries) / n;
+    w.pairQueries += static_cast<double>(s->detection.pairQueries) / n;
+  }
+  return w;
+}
+
 namespace {
 
 using namespace stackbook;
@@ -59,16 +72,7 @@ class StackbookBoxes final : public BoxEngine {
   }
 
   Work work() const override {
-    Work w;
-    const double n = counters_.steps > 0 ? static_cast<double>(counters_.steps) : 1.0;
-    const StageCounters* stages[] = {&counters_.collision, &counters_.contact, &counters_.shock};
-    w.impulses = w.phiQueries = w.pairQueries = 0.0;
-    for (const StageCounters* s : stages) {
-      w.impulses += static_cast<double>(s->impulses) / n;
-      w.phiQueries += static_cast<double>(s->detection.phiQueries) / n;
-      w.pairQueries += static_cast<double>(s->detection.pairQueries) / n;
-    }
-    return w;
+    return workPerStep(counters_);
   }
 
   std::vector<BodyState> states() const override {

@@ -61,16 +61,6 @@ BoxScene boxSceneFrom(const stackbook::SceneBodies<D>& bodies, const std::string
   return out;
 }
 
-bool needsEveryStep(const SweepSpec& spec) {
-  for (const SweepError& e : spec.errors) {
-    if (e.quantity == "energyDrift" || e.quantity == "rollingStart" || e.quantity == "flipPeriod" ||
-        e.quantity == "maxPenetration") {
-      return true;
-    }
-  }
-  return false;
-}
-
 bool needsPenetration(const SweepSpec& spec) {
   for (const SweepError& e : spec.errors) {
     if (e.quantity == "maxPenetration") return true;
@@ -102,7 +92,7 @@ SweepRow runPeer(const SweepSpec& spec, const SweepRun& run) {
   }
   // The same step count as stackbook's runScene(): the duration rounded up to whole steps.
   const auto steps = static_cast<std::int64_t>(std::ceil(scene.duration / boxes.dt - 1e-9));
-  const bool every = needsEveryStep(spec), penetration = needsPenetration(spec);
+  const bool every = stackbook::sweepNeedsEveryStep(spec), penetration = needsPenetration(spec);
   SweepTrajectory t;
   t.dimension = boxes.dimension;
   t.gravity = boxes.gravityVector();

@@ -121,7 +121,8 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
   r.requireObject(solver, p,
                   {"collisionIterations", "collisionPairIterations", "contactIterations",
                    "contactPairIterations", "contactRestitution", "shock", "order", "impulsePoint",
-                   "impulsePointNormalCosine", "frictionCone", "rotation", "surfaceQuery", "threads", "sleep"},
+                   "impulsePointNormalCosine", "frictionCone", "rotation", "surfaceQuery", "threads", "sleep",
+                   "pairImpulseTolerance", "stageApproachTolerance"},
                   "the solver settings");
   // Threads (chapter 10): 0 is every hardware thread; any count gives the same result.
   if (const json* v = member(solver, "threads")) s.parallel.threads = r.integer(*v, p + "/threads", 0, 1024);
@@ -140,6 +141,14 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
   if (const json* v = member(solver, "collisionPairIterations")) s.collisionPairIterations = r.integer(*v, p + "/collisionPairIterations", 1, 1000);
   if (const json* v = member(solver, "contactIterations")) s.contactIterations = r.integer(*v, p + "/contactIterations", 0, 1000);
   if (const json* v = member(solver, "contactPairIterations")) s.contactPairIterations = r.integer(*v, p + "/contactPairIterations", 1, 1000);
+  // The loop tolerances (chapter 8, "Ending the loops"): 0, GBF's loops, unless the scene asks.
+  if (const json* v = member(solver, "pairImpulseTolerance")) {
+    s.pairImpulseTolerance = r.inRange(*v, p + "/pairImpulseTolerance", 0.0, 1.0);
+    if (!(s.pairImpulseTolerance < 1.0)) r.fail(p + "/pairImpulseTolerance", "must be < 1, got 1");
+  }
+  if (const json* v = member(solver, "stageApproachTolerance")) {
+    s.stageApproachTolerance = r.nonNegative(*v, p + "/stageApproachTolerance");
+  }
   // A field that names one of two choices: "must be \"a\" or \"b\", got \"c\"" otherwise.
   const auto choose = [&](const char* field, const char* a, auto valueA, const char* b, auto valueB) {
     const std::string ptr = p + "/" + field;
@@ -189,8 +198,17 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
   }
   if (const json* shock = member(solver, "shock")) {
     const std::string q = p + "/shock";
-    r.requireObject(*shock, q, {"passes", "sweepsPerLevel", "pairIterations", "restitution", "replacesContactStage"},
+    r.requireObject(*shock, q,
+                    {"passes", "sweepsPerLevel", "pairIterations", "restitution", "replacesContactStage",
+                     "pairImpulseTolerance", "levelApproachTolerance"},
                     "the shock settings");
+    if (const json* v = member(*shock, "pairImpulseTolerance")) {
+      s.shock.pairImpulseTolerance = r.inRange(*v, q + "/pairImpulseTolerance", 0.0, 1.0);
+      if (!(s.shock.pairImpulseTolerance < 1.0)) r.fail(q + "/pairImpulseTolerance", "must be < 1, got 1");
+    }
+    if (const json* v = member(*shock, "levelApproachTolerance")) {
+      s.shock.levelApproachTolerance = r.nonNegative(*v, q + "/levelApproachTolerance");
+    }
     if (const json* v = member(*shock, "passes")) s.shock.passes = r.integer(*v, q + "/passes", 1, 100);
     if (const json* v = member(*shock, "sweepsPerLevel")) s.shock.sweepsPerLevel = r.integer(*v, q + "/sweepsPerLevel", 1, 100);
     if (const json* v = member(*shock, "pairIterations")) s.shock.pairIterations = r.integer(*v, q + "/pairIterations", 1, 1000);

@@ -28,7 +28,8 @@ namespace {
 const std::vector<std::string> kQuantities = {"position",       "velocity",    "angularVelocity",
                                               "energyDrift",    "maxPenetration", "rollingStart",
                                               "flipPeriod",     "drift",       "sag",
-                                              "windowed"};
+                                              "windowed",       "bounceApex",  "mirror",
+                                              "standing"};
 
 /// The peers a spec may name and each one's knobs (whether or not this program has them built).
 const std::vector<std::pair<std::string, std::vector<std::string>>> kPeerKnobs = {
@@ -159,7 +160,7 @@ SweepSpec parseSweepSpec(const json& doc, const std::string& file) {
     const json& e = errors[k];
     if (!e.is_object()) throw SceneError(file, p, "must be an object {\"name\": ..., \"quantity\": ...}");
     rejectUnknown(e, {"name", "quantity", "body", "axis", "radius", "tolerance", "expected", "relative", "within", "unit",
-                     "windows", "window", "refine"},
+                     "windows", "window", "refine", "apex"},
                   p, file);
     SweepError out;
     out.quantity = requireString(require(e, "quantity", p, file), p + "/quantity", file);
@@ -168,7 +169,7 @@ SweepSpec parseSweepSpec(const json& doc, const std::string& file) {
       throw SceneError(file, p + "/quantity",
                        "unknown quantity \"" + out.quantity + "\"" +
                            (close.empty() ? std::string(" (position, velocity, angularVelocity, energyDrift, "
-                                                        "maxPenetration, rollingStart, flipPeriod, drift, sag, windowed)")
+                                                        "maxPenetration, rollingStart, flipPeriod, drift, sag, windowed, bounceApex, mirror, standing)")
                                           : " (did you mean \"" + close + "\"?)"));
     }
     out.name = e.contains("name") ? requireString(e.at("name"), p + "/name", file) : out.quantity;
@@ -182,6 +183,12 @@ SweepSpec parseSweepSpec(const json& doc, const std::string& file) {
       if (!(out.radius > 0.0)) throw SceneError(file, p + "/radius", "must be > 0");
     } else if (out.quantity == "rollingStart") {
       throw SceneError(file, p, "missing field \"radius\" (rollingStart needs the ball's radius)");
+    }
+    if (out.quantity == "standing" && !e.contains("tolerance")) {
+      throw SceneError(file, p, "missing field \"tolerance\" (standing needs the distance, m, a body may move)");
+    }
+    if (out.quantity == "standing" && !e.contains("within")) {
+      throw SceneError(file, p, "missing field \"within\" (standing needs the seconds the table asks for)");
     }
     if (e.contains("tolerance")) {
       out.tolerance = requireNumber(e.at("tolerance"), p + "/tolerance", file);
@@ -220,6 +227,10 @@ SweepSpec parseSweepSpec(const json& doc, const std::string& file) {
     if (e.contains("refine")) {
       out.refine = requireIndex(e.at("refine"), p + "/refine", file);
       if (out.refine < 2) throw SceneError(file, p + "/refine", "must be >= 2 (the fine run's step is dt / refine)");
+    }
+    if (e.contains("apex")) {
+      out.apex = requireIndex(e.at("apex"), p + "/apex", file);
+      if (out.apex < 1) throw SceneError(file, p + "/apex", "must be >= 1 (the first apex after the start is 1)");
     }
     for (const SweepError& earlier : spec.errors) {
       if (earlier.name == out.name) throw SceneError(file, p + "/name", "\"" + out.name + "\" is already an error's name");
@@ -378,6 +389,70 @@ std::vector<SweepRun> sweepRuns(const SweepSpec& spec) {
   return runs;
 }
 
+bool sweepHigherIsBetter(const SweepError& e) { return e.quantity == "standing"; }
+
+bool sweepNeedsEveryStep(const SweepSpec& spec) {
+  for (const SweepError& e : spec.errors) {
+    if (e.quantity == "energyDrift" || e.quantity == "rollingStart" || e.quantity == "flipPeriod" ||
+        e.quantity == "maxPenetration" || e.quantity == "bounceApex" || e.quantity == "standing") {
+      return true;
+    }
+  }
+  return false;
+}
+
+double sweepApexHeight(const std::vector<double>& times, const std::vector<double>& heights, int k) {
+  int found = 0;
+  for (std::size_t f = 1; f + 1 < heights.size() && f < times.size(); ++f) {
+    if (!(heights[f - 1] < heights[f] && heights[f] >= heights[f + 1])) continue;
+    if (++found < k) continue;
+    // y(s) = y1 + B s + A s^2 with s = t - t1 through the three points; its vertex.
+    const double d0 = times[f - 1] - times[f], d2 = times[f + 1] - times[f];
+    const double q0 = (heights[f - 1] - heights[f]) / d0, q2 = (heights[f + 1] - heights[f]) / d2;
+    const double a = (q0 - q2) / (d0 - d2), b = q0 - a * d0;
+    return a < 0.0 ? heights[f] - b * b / (4.0 * a) : heights[f];
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+double sweepMirrorError(const std::vector<Eigen::Vector3d>& start, const std::vector<Eigen::Vector3d>& end,
+                        const std::vector<bool>& isStatic, const Eigen::Vector3d& normal, double tolerance,
+                        const std::string& file) {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  std::size_t dynamic = 0;
+  for (std::size_t k = 0; k < start.size(); ++k) {
+    if (isStatic[k]) continue;
+    centre += start[k];
+    ++dynamic;
+  }
+  if (dynamic == 0) return 0.0;
+  centre /= static_cast<double>(dynamic);
+  const auto reflect = [&](const Eigen::Vector3d& p) -> Eigen::Vector3d {
+    return p - 2.0 * (p - centre).dot(normal) * normal;
+  };
+  double worst = 0.0;
+  for (std::size_t i = 0; i < start.size(); ++i) {
+    if (isStatic[i]) continue;
+    const Eigen::Vector3d image = reflect(start[i]);
+    std::size_t partner = start.size();
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < start.size(); ++j) {
+      if (isStatic[j]) continue;
+      const double d = (start[j] - image).norm();
+      if (d < nearest) {
+        nearest = d;
+        partner = j;
+      }
+    }
+    if (!(nearest <= tolerance)) {
+      throw SceneError(file, "", "the mirror error needs a symmetric start: body " + std::to_string(i) +
+                                     " has no mirror image within " + number(tolerance) + " m");
+    }
+    worst = std::max(worst, (reflect(end[i]) - end[partner]).norm());
+  }
+  return worst;
+}
+
 double measureSweepTrajectory(const SweepError& e, const SweepTrajectory& t, const std::string& file) {
   const std::size_t bodies = t.isStatic.size();
   if (t.frames.empty()) throw SceneError(file, "", "error \"" + e.name + "\": the run has no frames");
@@ -448,6 +523,30 @@ double measureSweepTrajectory(const SweepError& e, const SweepTrajectory& t, con
       const Eigen::Vector3d d = t.frames[last][k].position - t.frames[0][k].position;
       value = std::max(value, (d - d.dot(up) * up).norm());
     }
+  } else if (e.quantity == "standing") {
+    value = t.times[last];
+    for (std::size_t f = 0; f < t.frames.size() && value == t.times[last]; ++f) {
+      for (std::size_t k = 0; k < bodies; ++k) {
+        if (!t.isStatic[k] && (t.frames[f][k].position - t.frames[0][k].position).norm() > e.tolerance) {
+          value = t.times[f];
+          break;
+        }
+      }
+    }
+  } else if (e.quantity == "bounceApex") {
+    bodyCheck();
+    std::vector<double> heights;
+    heights.reserve(t.frames.size());
+    for (const auto& frame : t.frames) heights.push_back(frame[b].position.dot(up));
+    value = sweepApexHeight(t.times, heights, e.apex);
+  } else if (e.quantity == "mirror") {
+    axisCheck(t.dimension);
+    std::vector<Eigen::Vector3d> start, end;
+    for (std::size_t k = 0; k < bodies; ++k) {
+      start.push_back(t.frames[0][k].position);
+      end.push_back(t.frames[last][k].position);
+    }
+    value = sweepMirrorError(start, end, t.isStatic, Eigen::Vector3d::Unit(e.axis), e.tolerance, file);
   } else if (e.quantity == "windowed") {
     throw SceneError(file, "", "error \"" + e.name + "\": the windowed error restarts stackbook's step; a peer's run has no such measure");
   } else if (e.quantity == "sag") {
@@ -553,6 +652,43 @@ double measureError(const SweepError& e, const RunResult<D>& r, const Scene& sce
       sum += worst;
     }
     value = sum / static_cast<double>(e.windows);
+  } else if (e.quantity == "standing") {
+    // The same definition as measureSweepTrajectory()'s, on the recorded poses.
+    const World<D>& world = std::get<SceneBodies<D>>(scene.bodies).world;
+    value = rec.times()[last];
+    for (std::size_t f = 0; f < rec.frameCount() && value == rec.times()[last]; ++f) {
+      for (std::size_t k = 0; k < rec.bodyCount(); ++k) {
+        if (!world.bodies[k].isStatic() && (rec.poses()[f][k].position - rec.poses()[0][k].position).norm() > e.tolerance) {
+          value = rec.times()[f];
+          break;
+        }
+      }
+    }
+  } else if (e.quantity == "bounceApex" || e.quantity == "mirror") {
+    // The same definitions as measureSweepTrajectory()'s, on the recorded poses.
+    const World<D>& world = std::get<SceneBodies<D>>(scene.bodies).world;
+    Vec<D> up = Vec<D>::Unit(D - 1);
+    if (world.gravity.norm() > 0.0) up = -world.gravity.normalized();
+    if (e.quantity == "bounceApex") {
+      bodyCheck();
+      std::vector<double> heights;
+      heights.reserve(rec.frameCount());
+      for (std::size_t f = 0; f < rec.frameCount(); ++f) heights.push_back(rec.poses()[f][b].position.dot(up));
+      value = sweepApexHeight(rec.times(), heights, e.apex);
+    } else {
+      axisCheck(D);
+      std::vector<Eigen::Vector3d> start, end;
+      std::vector<bool> isStatic;
+      for (std::size_t k = 0; k < rec.bodyCount(); ++k) {
+        Eigen::Vector3d p0 = Eigen::Vector3d::Zero(), p1 = Eigen::Vector3d::Zero();
+        p0.head<D>() = rec.poses()[0][k].position;
+        p1.head<D>() = rec.poses()[last][k].position;
+        start.push_back(p0);
+        end.push_back(p1);
+        isStatic.push_back(world.bodies[k].isStatic());
+      }
+      value = sweepMirrorError(start, end, isStatic, Eigen::Vector3d::Unit(e.axis), e.tolerance, file);
+    }
   } else if (e.quantity == "drift" || e.quantity == "sag") {
     // The same definitions as measureSweepTrajectory()'s, on the recorded poses.
     const World<D>& world = std::get<SceneBodies<D>>(scene.bodies).world;
@@ -574,16 +710,6 @@ double measureError(const SweepError& e, const RunResult<D>& r, const Scene& sce
   return e.relative ? diff / std::abs(e.expected) : diff;
 }
 
-bool needsEveryStep(const SweepSpec& spec) {
-  for (const SweepError& e : spec.errors) {
-    if (e.quantity == "energyDrift" || e.quantity == "rollingStart" || e.quantity == "flipPeriod" ||
-        e.quantity == "maxPenetration") {
-      return true;
-    }
-  }
-  return false;
-}
-
 }  // namespace
 
 SweepRow runSweepRun(const SweepSpec& spec, const SweepRun& run) {
@@ -599,7 +725,7 @@ SweepRow runSweepRun(const SweepSpec& spec, const SweepRun& run) {
   std::vector<std::string> overrides = {"solver.threads=1"};
   overrides.insert(overrides.end(), run.overrides.begin(), run.overrides.end());
   Scene scene = loadScene(spec.scene, overrides);
-  if (needsEveryStep(spec)) scene.output.frameRate = 1.0 / scene.settings.dt;
+  if (sweepNeedsEveryStep(spec)) scene.output.frameRate = 1.0 / scene.settings.dt;
   const SceneRun result = runScene(scene);
   SweepRow row;
   row.run = run;
@@ -781,7 +907,9 @@ namespace {
 /// for an absolute one.
 std::string boundText(const SweepError& e, double bound) {
   char text[48];
-  if (e.relative && e.hasExpected) {
+  if (sweepHigherIsBetter(e)) {
+    std::snprintf(text, sizeof text, "at least %g%s%s", bound, e.unit.empty() ? "" : " ", e.unit.c_str());
+  } else if (e.relative && e.hasExpected) {
     std::snprintf(text, sizeof text, "%g %%", bound * 100.0);
   } else {
     std::snprintf(text, sizeof text, "%g%s%s", bound, e.unit.empty() ? "" : " ", e.unit.c_str());
@@ -820,7 +948,8 @@ std::string sweepParetoTable(const SweepSpec& spec, const std::string& csvPath) 
           if (rows[r].size() != rows[0].size() || (rows[r][2] != spec.engine) != peer) continue;
           const double err = std::strtod(rows[r][9 + e].c_str(), nullptr);
           const double cost = std::strtod(rows[r][8].c_str(), nullptr);
-          if (err <= bound && cost < bestCost) {
+          const bool meets = sweepHigherIsBetter(spec.errors[e]) ? err >= bound : err <= bound;
+          if (meets && cost < bestCost) {
             best = r;
             bestCost = cost;
           }
@@ -900,7 +1029,12 @@ std::vector<std::string> plotSweep(const SweepSpec& spec, const std::string& csv
       out << "\n\n";
     }
     out << "# Pareto front\n";
-    for (std::size_t k : paretoFront(cost, error)) {
+    // The front of a measure where higher is better (seconds standing) is the front of its negative.
+    std::vector<double> worse = error;
+    if (sweepHigherIsBetter(spec.errors[e])) {
+      for (double& w : worse) w = -w;
+    }
+    for (std::size_t k : paretoFront(cost, worse)) {
       out << number(cost[k]) << " " << number(std::max(error[k], 1e-17)) << " \"\"\n";
     }
     output_detail::writeFileOrThrow("plotSweep", data, out.str());

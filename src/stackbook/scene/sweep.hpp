@@ -39,6 +39,18 @@ struct SweepKnob {
 ///   from its start, at the end (m);
 /// - `sag`: how far body `body`'s centre moved along gravity from its start, at the end (m;
 ///   sinking and rising alike, since standing still is the answer).
+/// - `bounceApex`: the height (along -gravity) of body `body`'s centre at its `apex`-th apex
+///   (1, 2, ...): the vertex of the parabola through the apex-th interior local maximum of the
+///   recorded heights and its two neighbours (sweepApexHeight()); a ball dropped from a gap
+///   h with restitution e has its k-th apex at e^(2k) h above its resting height;
+/// - `mirror`: the mirror error of a structure that starts symmetric about the plane through
+///   its dynamic bodies' mean start position with normal `axis`: the largest distance between
+///   a body's end position reflected in that plane and its mirror partner's end position (m;
+///   sweepMirrorError()); 0 for a step that keeps the symmetry;
+/// - `standing`: the seconds a structure stands: the first frame time at which some dynamic
+///   body's centre is farther than `tolerance` (m) from its start, or the run's length if none
+///   ever is. Higher is better: its Pareto front and its `within` (seconds, "at least") are
+///   read that way (sweepHigherIsBetter());
 /// - `windowed`: the self-consistency error of Erez, Tassa and Todorov (ICRA 2015): the mean
 ///   over `windows` windows of `window` seconds of the largest distance between a dynamic
 ///   body's centre in the run and in a run at dt / `refine`, each window restarted from the
@@ -62,6 +74,7 @@ struct SweepError {
   int windows = 10;      ///< `windowed`: how many windows
   double window = 0.1;   ///< `windowed`: each window's length (s)
   int refine = 16;       ///< `windowed`: the fine run's step is dt / refine
+  int apex = 1;          ///< `bounceApex`: which apex (1 is the first after the start)
 };
 
 /// A peer engine's runs in a sweep: the engine (`box2d` in 2D, `bullet` in 3D) and its own
@@ -147,6 +160,28 @@ struct SweepTrajectory {
 /// The error `e` of a run given as frames (what runSweepRun() measures for stackbook, from
 /// the same definitions). Throws SceneError naming `file` when the body or axis does not exist.
 double measureSweepTrajectory(const SweepError& e, const SweepTrajectory& t, const std::string& file);
+
+/// Whether a larger value of the measure is the better one (`standing`); for every other
+/// measure, an error, the smaller is.
+bool sweepHigherIsBetter(const SweepError& e);
+
+/// Whether the spec's errors need a frame after every step (energy drift, rolling start, flip
+/// period, penetration, bounce apexes); otherwise the scene's own frame rate is kept.
+bool sweepNeedsEveryStep(const SweepSpec& spec);
+
+/// The k-th apex (k >= 1) of a series of heights at increasing times: the k-th frame f with
+/// heights[f-1] < heights[f] >= heights[f+1], refined to the vertex of the parabola through
+/// the three (exact for a free flight under symplectic Euler, whose positions lie on a
+/// parabola); +infinity if the series has fewer than k apexes.
+double sweepApexHeight(const std::vector<double>& times, const std::vector<double>& heights, int k);
+
+/// The mirror error of a structure: every dynamic body's start position reflected in the plane
+/// through their mean start position with unit normal `normal` must be another dynamic body's
+/// start within `tolerance` (else a SceneError naming `file`); the error is the largest
+/// distance between a body's end position, reflected, and its partner's end position.
+double sweepMirrorError(const std::vector<Eigen::Vector3d>& start, const std::vector<Eigen::Vector3d>& end,
+                        const std::vector<bool>& isStatic, const Eigen::Vector3d& normal, double tolerance,
+                        const std::string& file);
 
 /// A peer engine the sweep can run (stackbook_peers registers Box2D and Bullet when built).
 struct SweepPeerEngine {
