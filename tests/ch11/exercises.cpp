@@ -11,6 +11,7 @@
 #include "stackbook/exercises/ex11_1_observed_order.hpp"
 #include "stackbook/exercises/ex11_2_apex_heights.hpp"
 #include "stackbook/exercises/ex11_3_windowed_error.hpp"
+#include "stackbook/exercises/ex11_4_envelope_order.hpp"
 
 using namespace stackbook;
 
@@ -77,6 +78,32 @@ TEST_CASE("Exercise 11.3: the windowed error of symplectic Euler on a spring is 
   CHECK(e1 / e2 == doctest::Approx(2.0).epsilon(0.05));
   CHECK_THROWS_AS(windowedError(step, start, 0, 0.5, 1e-2, 1e-4), std::invalid_argument);
   CHECK_THROWS_AS(windowedError(step, start, 5, 0.5, 1e-4, 1e-2), std::invalid_argument);
+}
+
+TEST_CASE("Exercise 11.4: the envelope of a zigzag curve has the order of its upper line") {
+  // Every other point lies on 0.3 dt; the others fall below it and below the next finer point
+  // on the line, so the envelope is the line's points and its order is exactly 1.
+  const std::vector<double> dt = {0.016, 0.008, 0.004, 0.002, 0.001, 0.0005};
+  const std::vector<double> error = {0.3 * 0.016, 0.1 * 0.008, 0.3 * 0.004, 0.1 * 0.002, 0.3 * 0.001, 0.1 * 0.0005};
+  const std::vector<std::size_t> envelope = upperEnvelope(dt, error);
+  CHECK(envelope == std::vector<std::size_t>{0, 2, 4, 5});
+  // The finest point is never beaten (no smaller dt), so it belongs to the envelope too:
+  // the slope through (1e-3, 3e-4) and (5e-4, 5e-5) pulls the fit above 1.
+  const double all = envelopeOrder(dt, error);
+  CHECK(all > 1.0);
+  // Without the last point the envelope is the line alone: order 1 to rounding.
+  const std::vector<double> dt5(dt.begin(), dt.end() - 1), error5(error.begin(), error.end() - 1);
+  CHECK(envelopeOrder(dt5, error5) == doctest::Approx(1.0).epsilon(1e-12));
+  // A second-order curve is its own envelope.
+  std::vector<double> second;
+  for (double h : dt) second.push_back(7.0 * h * h);
+  CHECK(upperEnvelope(dt, second).size() == dt.size());
+  CHECK(envelopeOrder(dt, second) == doctest::Approx(2.0).epsilon(1e-12));
+  CHECK_THROWS_AS(envelopeOrder({1e-3}, {1e-4}), std::invalid_argument);
+  CHECK_THROWS_AS(envelopeOrder({1e-3, 1e-3}, {1e-4, 2e-4}), std::invalid_argument);
+  CHECK_THROWS_AS(envelopeOrder({1e-3, 5e-4}, {1e-4, 0.0}), std::invalid_argument);
+  // A curve that rises as dt falls has a one-point envelope: no order.
+  CHECK_THROWS_AS(envelopeOrder({1e-3, 5e-4}, {1e-4, 2e-4}), std::invalid_argument);
 }
 
 }  // TEST_SUITE
