@@ -41,7 +41,7 @@ TEST_CASE("the apex of a free flight under symplectic Euler is the vertex of its
   CHECK(std::isinf(sweepApexHeight({0.0, 1.0, 2.0}, {1.0, 0.5, 0.0}, 1)));
 }
 
-TEST_CASE("a dropped disk's bounce apexes are e^(2k) h above its resting height, within a step's travel") {
+TEST_CASE("a dropped disk's bounce apexes are e^(2k) h above its resting height within a step's travel") {
   // bounce_2d.json: r = 0.1 m, gap h = 1 m, e = 0.5. The collision stage reverses the normal
   // velocity exactly (e v), but it acts on the step whose predicted pose is in contact, so the
   // disk turns up to one step's travel v dt above the floor, v = sqrt(2 g h) at the first
