@@ -8,6 +8,7 @@
 
 #include "stackbook/geometry/analytic_sdf.hpp"
 #include "stackbook/stepping/gbf_step.hpp"
+#include "support/dimensions.hpp"
 
 using namespace stackbook;
 
@@ -120,7 +121,7 @@ TEST_SUITE(STACKBOOK_CHAPTER) {
 // [test_slide_then_roll]
 TEST_CASE_TEMPLATE("deepest-point query: a ball launched sliding at 5 m/s with mu = 0.2 rolls "
                    "off at the closed-form time and speed and without hopping",
-                   T, std::integral_constant<int, 2>, std::integral_constant<int, 3>) {
+                   T, stackbook::testing::In2D, stackbook::testing::In3D) {
   constexpr int D = T::value;
   const double v0 = 5.0, mu = 0.2;
   const Roll r = slideThenRoll<D>(v0, mu, 1e-3, 2.0, SurfaceQuery::DeepestPoint);
@@ -129,7 +130,7 @@ TEST_CASE_TEMPLATE("deepest-point query: a ball launched sliding at 5 m/s with m
 // [test_slide_then_roll]
 
 TEST_CASE_TEMPLATE("fixed samples: the same ball hops and ends slower (the test above can fail)",
-                   T, std::integral_constant<int, 2>, std::integral_constant<int, 3>) {
+                   T, stackbook::testing::In2D, stackbook::testing::In3D) {
   constexpr int D = T::value;
   const double v0 = 5.0, mu = 0.2;
   const Roll r = slideThenRoll<D>(v0, mu, 1e-3, 2.0, SurfaceQuery::Samples);
@@ -139,7 +140,7 @@ TEST_CASE_TEMPLATE("fixed samples: the same ball hops and ends slower (the test 
 
 TEST_CASE_TEMPLATE("deepest-point query of each convex primitive against a flat face is its "
                    "lowest point",
-                   T, std::integral_constant<int, 2>, std::integral_constant<int, 3>) {
+                   T, stackbook::testing::In2D, stackbook::testing::In3D) {
   constexpr int D = T::value;
   // A floor (a big box) in its own frame; each shape turned and placed above it.
   const BoxShape<D> ground = makeBoxShape<D>(Vec<D>::Constant(100.0));
