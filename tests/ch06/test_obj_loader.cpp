@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -104,6 +105,51 @@ TEST_CASE("OBJ text with a face of two vertices or a zero index is malformed") {
   const TriangleMesh relative =
       parseObjMesh(tetra + "f -4 -2 -3\nf -4 -3 -1\nf -4 -1 -2\nf -3 -2 -1\n", "relative.obj");
   CHECK(signedMeasure<3>(relative) == doctest::Approx(1.0 / 6.0).epsilon(1e-15));
+}
+
+// The line checks and tinyobjloader must read the same lines: each input below was split
+// differently by the two before tinyobjloader was given the checked lines only.
+TEST_CASE("the OBJ line checks and tinyobjloader read the same lines, words and bytes") {
+  const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+  const std::string f = "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  const double sixth = 1.0 / 6.0;
+  CHECK(signedMeasure<3>(parseObjMesh(v + f, "tetra.obj")) == doctest::Approx(sixth).epsilon(1e-15));
+  // A lone carriage return ends a line (old Mac files), for both readers: the face after
+  // a comment is a face, and checked.
+  std::string mac = v + f;
+  std::replace(mac.begin(), mac.end(), '\n', '\r');
+  CHECK(signedMeasure<3>(parseObjMesh(mac, "mac.obj")) == doctest::Approx(sixth).epsilon(1e-15));
+  CHECK_THROWS_WITH_AS(parseObjMesh(v + f + "# a comment\rf 1 2 9\n", "cr.obj"),
+                       doctest::Contains("cr.obj: line 10 ('f 1 2 9'): face refers to vertex 9, but the file has 4"),
+                       MeshError);
+  // A '#' starts a comment anywhere: tinyobjloader alone read "3#x 9" as vertices 3 and 9.
+  CHECK(parseObjMesh(v + "f 1 3 2#x 9\n" + f.substr(8), "hash.obj").faces.size() == 4);
+  // Vertical tab and form feed separate words for the checks; tinyobjloader alone read
+  // "1\v3" as vertex 1, and "v\f0 0 0" as no vertex at all.
+  CHECK(signedMeasure<3>(parseObjMesh("v\f0 0 0\n" + v.substr(8) + "f 1\v3 2\n" + f.substr(8), "vt.obj")) ==
+        doctest::Approx(sixth).epsilon(1e-15));
+  // A NUL byte ended the line for tinyobjloader, not for the checks: now it is an error.
+  CHECK_THROWS_WITH_AS(parseObjMesh(v + f + std::string("f 1 2 3\0 9\n", 11), "nul.obj"),
+                       doctest::Contains("nul.obj: line 9: a NUL byte: an OBJ file is text"), MeshError);
+  // Lines the solid does not use are not given to tinyobjloader, which allocates 8192
+  // values for each `t` line: 2000 of them would take more than 600 MB.
+  std::string tags;
+  for (int k = 0; k < 2000; ++k) tags += "t crease 8192/8192/8192\n";
+  CHECK(parseObjMesh(tags + v + f, "tags.obj").faces.size() == 4);
+  // A polygon's triangulation costs the square of its vertices per ear: at most 1000.
+  std::string polygon = "f";
+  for (int k = 0; k < 1001; ++k) polygon += " " + std::to_string(1 + k % 4);
+  CHECK_THROWS_WITH_AS(parseObjMesh(v + polygon + "\n", "poly.obj"),
+                       doctest::Contains("poly.obj: line 5 ('f 1 2 3 4 1 2 3 4"), MeshError);
+  CHECK_THROWS_WITH_AS(parseObjMesh(v + polygon + "\n", "poly.obj"),
+                       doctest::Contains("a face of 1001 vertices; at most 1000"), MeshError);
+  // A message quotes at most 60 bytes of a line.
+  try {
+    parseObjMesh("v 1 2 " + std::string(100000, 'x') + "\n", "long.obj");
+    FAIL("a long malformed line loaded");
+  } catch (const MeshError& error) {
+    CHECK(std::string(error.what()).size() < 300);
+  }
 }
 
 }  // TEST_SUITE

@@ -80,6 +80,7 @@ const BadInput kBadInputs[] = {
     {"unsigned_integer.json", "", "/solver/contactIterations"},
     {"obj_subnormal.json", "", "/bodies/1/shape/file"},
     {"obj_overflow.json", "", "/bodies/1/shape/file"},
+    {"obj_nul_byte.json", "", "/bodies/1/shape/file"},
     // 8. outputs and keys
     {"duplicate_key.json", "", "/dt"},
     {"set_base.json", "--set bodies.1000000000.name=x", "/bodies/1000000000"},

@@ -33,12 +33,12 @@ std::vector<std::string> splitWhitespace(const std::string& line) {
   return tokens;
 }
 
-/// Parses the whole token as a double (strtod must consume every character).
+/// Parses the whole token as a double (strtod must consume every byte of it).
 bool parseNumber(const std::string& token, double& value) {
   errno = 0;
   char* end = nullptr;
   value = std::strtod(token.c_str(), &end);
-  return end != token.c_str() && *end == '\0' && errno != ERANGE;
+  return end != token.c_str() && end == token.c_str() + token.size() && errno != ERANGE;
 }
 
 /// Parses the whole token as a (possibly negative) integer.
@@ -46,29 +46,61 @@ bool parseInteger(const std::string& token, long& value) {
   errno = 0;
   char* end = nullptr;
   value = std::strtol(token.c_str(), &end, 10);
-  return end != token.c_str() && *end == '\0' && errno != ERANGE;
+  return end != token.c_str() && end == token.c_str() + token.size() && errno != ERANGE;
+}
+
+/// A line as a message quotes it: at most 60 bytes, so one long line cannot make the
+/// message long.
+std::string quoteLine(const std::string& line) {
+  constexpr std::size_t kShown = 60;
+  return "'" + (line.size() <= kShown ? line : line.substr(0, kShown) + "...") + "'";
 }
 
 // [obj_line_checks]
+/// The most vertices one face may have: tinyobjloader triangulates a polygon by ear
+/// clipping, whose cost grows with the square of its vertices per ear, so a face of a
+/// million vertices would run for hours. Modelling tools write polygons of a few hundred
+/// vertices at most (the cap of a finely divided cylinder).
+constexpr std::size_t kMaxFaceVertices = 1000;
+
+/// What checkObjLines accepted: the vertex positions, and the text tinyobjloader reads.
+struct CheckedObj {
+  std::vector<Vec3> positions;
+  std::string text;
+};
+
 /// The checks tinyobjloader does not make: every `v` line has 3 finite numbers (4 with a
-/// weight, 6 or 7 with a colour), every `f` line at least 3 vertex references whose
-/// vertex index is a nonzero integer naming an existing vertex (negative: relative to the
-/// vertices defined so far). Other lines (vt, vn, o, g, s, usemtl, mtllib, l, p, comments)
-/// do not affect the solid and are left to tinyobjloader. Returns the vertex positions,
-/// parsed with strtod, which rounds correctly: tinyobjloader's own number parser is off by
-/// a few units in the last place for most 17-digit numbers, and a mesh saved and loaded
-/// again must not move.
-std::vector<Vec3> checkObjLines(const std::string& text, const std::string& source) {
+/// weight, 6 or 7 with a colour), every `f` line 3 to kMaxFaceVertices vertex references
+/// whose vertex index is a nonzero integer naming an existing vertex (negative: relative to
+/// the vertices defined so far). Other lines (vt, vn, o, g, s, usemtl, mtllib, l, p, t)
+/// do not affect the solid. Lines end at LF, CR LF or a lone CR (as tinyobjloader splits
+/// them); a `#` starts a comment anywhere on a line; a NUL byte is an error (the
+/// file is not text). The positions are parsed with strtod, which rounds correctly:
+/// tinyobjloader's own number parser is off by a few units in the last place for most
+/// 17-digit numbers, and a mesh saved and loaded again must not move.
+///
+/// tinyobjloader then reads not the file but the returned text: the `v` and `f` lines as
+/// checked here, one space between their words, and an empty line in place of every other
+/// line. So the two readers cannot split a line differently (a `#` after a face, a byte
+/// one takes for a space and the other does not), and the lines the solid does not use
+/// (a `t` line makes tinyobjloader allocate 8192 values per line) cost nothing.
+CheckedObj checkObjLines(const std::string& text, const std::string& source) {
   std::vector<std::string> lines;
-  {
-    std::istringstream in(text);
-    std::string line;
-    while (std::getline(in, line)) {
-      if (!line.empty() && line.back() == '\r') line.pop_back();
-      const std::size_t hash = line.find('#');
-      if (hash != std::string::npos) line.erase(hash);
-      lines.push_back(line);
+  for (std::size_t start = 0; start < text.size();) {
+    const std::size_t end = text.find_first_of("\r\n", start);
+    const std::size_t stop = end == std::string::npos ? text.size() : end;
+    lines.push_back(text.substr(start, stop - start));
+    if (end == std::string::npos) break;
+    start = end + (text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n' ? 2 : 1);
+  }
+  for (std::size_t number = 1; number <= lines.size(); ++number) {
+    if (lines[number - 1].find('\0') != std::string::npos) {
+      std::ostringstream msg;
+      msg << "line " << number << ": a NUL byte: an OBJ file is text, and this one is binary or damaged";
+      fail(source, msg.str());
     }
+    const std::size_t hash = lines[number - 1].find('#');
+    if (hash != std::string::npos) lines[number - 1].erase(hash);
   }
   long totalVertices = 0;
   for (const std::string& line : lines) {
@@ -76,12 +108,16 @@ std::vector<Vec3> checkObjLines(const std::string& text, const std::string& sour
     if (!tokens.empty() && tokens[0] == "v") ++totalVertices;
   }
   long verticesSoFar = 0;
-  std::vector<Vec3> positions;
+  CheckedObj checked;
   for (std::size_t number = 1; number <= lines.size(); ++number) {
     const std::vector<std::string> tokens = splitWhitespace(lines[number - 1]);
-    if (tokens.empty()) continue;
+    std::string& forTinyobj = lines[number - 1];  // becomes the line tinyobjloader reads
+    if (tokens.empty() || (tokens[0] != "v" && tokens[0] != "f")) {
+      forTinyobj.clear();
+      continue;
+    }
     std::ostringstream where;
-    where << "line " << number << " ('" << lines[number - 1] << "')";
+    where << "line " << number << " (" << quoteLine(lines[number - 1]) << ")";
     if (tokens[0] == "v") {
       const std::size_t count = tokens.size() - 1;
       if (count != 3 && count != 4 && count != 6 && count != 7) {
@@ -95,12 +131,12 @@ std::vector<Vec3> checkObjLines(const std::string& text, const std::string& sour
         double value = 0.0;
         if (!parseNumber(tokens[k], value)) {
           std::ostringstream msg;
-          msg << where.str() << ": malformed vertex: coordinate " << k << " ('" << tokens[k] << "') ";
+          msg << where.str() << ": malformed vertex: coordinate " << k << " (" << quoteLine(tokens[k]) << ") ";
           // A number out of the range of a double says so, too large or too small.
           errno = 0;
           char* end = nullptr;
           const double x = std::strtod(tokens[k].c_str(), &end);
-          if (end != tokens[k].c_str() && *end == '\0' && errno == ERANGE) {
+          if (end != tokens[k].c_str() && end == tokens[k].c_str() + tokens[k].size() && errno == ERANGE) {
             msg << (std::abs(x) > 1.0 ? "is beyond the range of a double (about 1.8e308)"
                                       : "is too small for a normal double (below about 2.2e-308); write 0");
           } else {
@@ -110,28 +146,37 @@ std::vector<Vec3> checkObjLines(const std::string& text, const std::string& sour
         }
         if (!std::isfinite(value)) {
           std::ostringstream msg;
-          msg << where.str() << ": non-finite vertex coordinate " << k << " ('" << tokens[k]
-              << "')";
+          msg << where.str() << ": non-finite vertex coordinate " << k << " (" << quoteLine(tokens[k]) << ")";
           fail(source, msg.str());
         }
         if (k <= 3) position[static_cast<Eigen::Index>(k - 1)] = value;
       }
-      positions.push_back(position);
+      checked.positions.push_back(position);
       ++verticesSoFar;
-    } else if (tokens[0] == "f") {
+      std::ostringstream vertex;  // the correctly rounded numbers, so both readers see one polygon
+      vertex << std::setprecision(17) << "v " << position.x() << " " << position.y() << " " << position.z();
+      forTinyobj = vertex.str();
+    } else {
       if (tokens.size() < 4) {
         std::ostringstream msg;
         msg << where.str() << ": malformed face: " << tokens.size() - 1
             << " vertices, a face needs at least 3";
         fail(source, msg.str());
       }
+      if (tokens.size() - 1 > kMaxFaceVertices) {
+        std::ostringstream msg;
+        msg << where.str() << ": a face of " << tokens.size() - 1 << " vertices; at most " << kMaxFaceVertices
+            << " (triangulating a polygon costs the square of its vertices; split it into smaller faces)";
+        fail(source, msg.str());
+      }
+      forTinyobj = "f";
       for (std::size_t k = 1; k < tokens.size(); ++k) {
         const std::string vertexPart = tokens[k].substr(0, tokens[k].find('/'));
         long index = 0;
         if (!parseInteger(vertexPart, index) || index == 0) {
           std::ostringstream msg;
-          msg << where.str() << ": malformed face: '" << tokens[k]
-              << "' is not a vertex reference (a nonzero integer, 1-based)";
+          msg << where.str() << ": malformed face: " << quoteLine(tokens[k])
+              << " is not a vertex reference (a nonzero integer, 1-based)";
           fail(source, msg.str());
         }
         const bool inRange = index > 0 ? index <= totalVertices : -index <= verticesSoFar;
@@ -142,10 +187,15 @@ std::vector<Vec3> checkObjLines(const std::string& text, const std::string& sour
           if (index < 0) msg << " (" << verticesSoFar << " defined before this line)";
           fail(source, msg.str());
         }
+        forTinyobj += " " + std::to_string(index);  // the vertex only: texture and normal indices are not used
       }
     }
   }
-  return positions;
+  std::size_t size = 0;
+  for (const std::string& line : lines) size += line.size() + 1;
+  checked.text.reserve(size);
+  for (const std::string& line : lines) checked.text += line + "\n";
+  return checked;
 }
 // [obj_line_checks]
 
@@ -214,12 +264,13 @@ int dropUnusedVertices(TriangleMesh& mesh) {
 // [parse_obj_mesh]
 TriangleMesh parseObjMesh(const std::string& text, const std::string& sourceName,
                           const ObjLoadSettings& settings) {
-  const std::vector<Vec3> positions = checkObjLines(text, sourceName);
+  const CheckedObj checked = checkObjLines(text, sourceName);
+  const std::vector<Vec3>& positions = checked.positions;
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;     // polygons become triangle fans
   config.vertex_color = false;
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromString(text, "", config)) {
+  if (!reader.ParseFromString(checked.text, "", config)) {
     std::string error = reader.Error();
     while (!error.empty() && (error.back() == '\n' || error.back() == '\r')) error.pop_back();
     fail(sourceName, "parse error: " + error);
@@ -244,9 +295,8 @@ TriangleMesh parseObjMesh(const std::string& text, const std::string& sourceName
       }
       std::array<int, 3> face{};
       for (std::size_t k = 0; k < 3; ++k) {
-        // checkObjLines checked the face lines it recognised; a line that the two readers
-        // tokenise differently (a byte the checker takes for part of a word, say) must not
-        // reach the mesh with an index outside its vertices.
+        // tinyobjloader read the face lines checkObjLines wrote; should the two ever
+        // disagree, an index outside the vertices still must not reach the mesh.
         const int index = shape.mesh.indices[offset + k].vertex_index;
         if (index < 0 || static_cast<std::size_t>(index) >= positions.size()) {
           std::ostringstream msg;

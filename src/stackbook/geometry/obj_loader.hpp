@@ -6,7 +6,8 @@
 /// and the defect (with the line, face or edge where it is).
 ///
 /// The pipeline: read the text; check every `v` and `f` line (tinyobjloader itself reads
-/// "v 1 abc 0" as (1, 0, 0) and "v nan 0 0" as the origin without a word); parse with
+/// "v 1 abc 0" as (1, 0, 0) and "v nan 0 0" as the origin without a word) and write them
+/// out again, one space between words and nothing else on the line; parse that text with
 /// tinyobjloader, which triangulates polygons; merge duplicate vertices; drop vertices no
 /// face uses; validateMesh.
 
