@@ -57,6 +57,9 @@ void printNotes(const Scene& scene) {
 std::string resolveScene(const std::string& name) {
   std::error_code ec;
   if (fs::is_regular_file(name, ec)) return name;
+  if (const std::string why = whyNotARegularFile(name); why != "no such file") {
+    throw SceneError(name, "", "the scene is " + why);
+  }
   if (name.find('/') == std::string::npos) {
     for (const std::string& candidate : {name, name + ".json"}) {
       const fs::path bundled = fs::path(scenesDir()) / candidate;

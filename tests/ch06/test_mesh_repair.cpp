@@ -169,6 +169,35 @@ TEST_CASE("Malformed STL files: the line or the header that is wrong") {
   }
 }
 
+TEST_CASE("Malformed PLY headers: the line that is wrong, before assimp reserves what the counts announce") {
+  const std::string tail =
+      "property float x\nproperty float y\nproperty float z\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const auto plyError = [](const std::string& text) {
+    try {
+      parseAssimpMesh(text, "bad.ply", ObjLoadSettings{});
+    } catch (const MeshError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  // A billion vertices announced in 150 bytes: refused from the header (assimp would
+  // reserve more than 10 GB first).
+  CHECK(contains(plyError("ply\nformat ascii 1.0\nelement vertex 1000000000\n" + tail),
+                 "bad.ply: the PLY header announces elements of at least 6e+09 bytes, but the file has 26 bytes"));
+  CHECK(contains(plyError("ply\nformat binary_little_endian 1.0\nelement vertex 3\n" + tail),
+                 "announces elements of at least 37 bytes"));
+  CHECK(contains(plyError("ply\nformat ascii 1.0\nelement vertex -5\n" + tail),
+                 "bad.ply: header line 3 ('element vertex -5'): the element count '-5' is not a non-negative integer"));
+  CHECK(contains(plyError("ply\nformat ascii 1.0\nelement vertex 3\nproperty flaot w\n" + tail),
+                 "header line 4 ('property flaot w'): unknown property type 'flaot'"));
+  CHECK(contains(plyError("ply\nformat text 1.0\nelement vertex 3\n" + tail), "unknown format 'text'"));
+  CHECK(contains(plyError("ply\nformat ascii 1.0\nelement vertex 3\n"), "no 'end_header' line"));
+  CHECK(contains(plyError("solid x\n"), "not a PLY file"));
+  // The same header with its true count reads (a single triangle: not a solid, but read).
+  CHECK(contains(plyError("ply\nformat ascii 1.0\nelement vertex 3\n" + tail), "hole"));
+}
+
 TEST_CASE("orientFaces turns the one flipped triangle of a tetrahedron") {
   TriangleMesh mesh = loadRaw("flipped_face.obj");
   int conflicts = -1;

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "stackbook/scene/scene.hpp"
@@ -81,6 +82,12 @@ const BadInput kBadInputs[] = {
     {"obj_subnormal.json", "", "/bodies/1/shape/file"},
     {"obj_overflow.json", "", "/bodies/1/shape/file"},
     {"obj_nul_byte.json", "", "/bodies/1/shape/file"},
+    {"ply_huge_count.json", "", "/bodies/1/shape/file"},
+    // paths that name something other than a file
+    {"mesh_dev_zero.json", "", "/bodies/1/shape/file: the mesh file is not a regular file"},
+    {"mesh_folder.json", "", "/bodies/1/shape/file: the mesh file is a folder"},
+    {".", "", "the scene is a folder, not a file"},
+    {"/dev/zero", "", "the scene is not a regular file"},
     // 8. outputs and keys
     {"duplicate_key.json", "", "/dt"},
     {"set_base.json", "--set bodies.1000000000.name=x", "/bodies/1000000000"},
@@ -142,17 +149,29 @@ TEST_CASE("a scene path that is not UTF-8 is escaped in the error line and writt
   CHECK(summary.find("bad\xef\xbf\xbd" "dir/s.json") != std::string::npos);
 }
 
-TEST_CASE("--out is probed before the run: an existing file or a folder under a file is one line and exit 1") {
+TEST_CASE("--out is probed before the run: a file, a folder under a file, a place nobody may write is one line and exit 1") {
   const fs::path dir = fs::temp_directory_path() / "stackbook_ch10_bad_inputs";
   fs::create_directories(dir);
   { std::ofstream(dir / "a_file") << "x"; }
   const std::string scene = (kCorpus / "scene" / "set_base.json").string();
-  for (const char* out : {"a_file", "a_file/sub"}) {
+  // The tests may run as root, for whom permission bits do not stop a write: the places
+  // nobody can write are in /proc (no new folder can be made there, and its existing
+  // folders take no new files).
+  const std::pair<const char*, const char*> cases[] = {
+      {"a_file", "exists and is not a folder"},
+      {"a_file/sub", "cannot create the folder"},       // ENOTDIR
+      {"/dev/null", "exists and is not a folder"},
+      {"/proc/stackbook_out", "cannot create the folder"},
+      {"/proc/self", "cannot write files in the folder"},
+  };
+  for (const auto& [out, reason] : cases) {
     CAPTURE(out);
-    const Outcome o = runProgram("run -q '" + scene + "' --out " + out, dir);
+    // Without -q a run prints its summary on stdout: nothing there means nothing ran.
+    const Outcome o = runProgram("run '" + scene + "' --out " + out, dir);
     CHECK(o.code == kExitBadInput);
     CHECK(std::count(o.err.begin(), o.err.end(), '\n') == 1);
-    CHECK(o.err.rfind(std::string("stackbook: error: --out ") + out + ": ", 0) == 0);
+    CHECK(o.err.rfind(std::string("stackbook: error: --out ") + out + ": " + reason, 0) == 0);
+    CHECK(o.out.empty());
   }
   // A good run leaves complete files only: no temporary name is left behind.
   const Outcome ok = runProgram("run -q '" + scene + "' --out good", dir);

@@ -116,6 +116,91 @@ void checkStl(const std::string& bytes, const std::string& source) {
 }
 // [stl_checks]
 
+// [ply_checks]
+/// The checks assimp does not make on a PLY header, with the line that fails: it ends
+/// with `end_header`, its format is ascii or binary, every element count is an integer,
+/// every property type is one PLY defines, and the elements fit in the bytes after the
+/// header (an ASCII number takes at least 2 bytes with its separator; a binary one its
+/// size; a list at least its count). assimp reserves memory for the counts the header
+/// announces before it reads any item: "element vertex 1000000000" in a 200-byte file
+/// would take more than 10 GB.
+void checkPly(const std::string& bytes, const std::string& source) {
+  const std::size_t headerEnd = bytes.find("end_header");
+  if (bytes.compare(0, 3, "ply") != 0) failMeshFile(source, "not a PLY file: it does not start with 'ply'");
+  if (headerEnd == std::string::npos) failMeshFile(source, "the PLY header has no 'end_header' line");
+  const std::size_t dataStart = bytes.find('\n', headerEnd);
+  const std::size_t dataBytes = dataStart == std::string::npos ? 0 : bytes.size() - dataStart - 1;
+  const auto scalarSize = [](const std::string& type) -> int {
+    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+    if (type == "int" || type == "uint" || type == "float" || type == "int32" || type == "uint32" || type == "float32")
+      return 4;
+    if (type == "double" || type == "float64") return 8;
+    return 0;
+  };
+  std::istringstream in(bytes.substr(0, headerEnd));
+  std::string line, element;
+  bool ascii = true;
+  unsigned long long count = 0;
+  long double needed = 0.0L;  // bytes the elements need at least (long double: counts up to 2^64 x 8)
+  std::uint64_t perItem = 0;
+  const auto finishElement = [&] { needed += static_cast<long double>(count) * static_cast<long double>(perItem); };
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    const std::string where = "header line " + std::to_string(number) + " ('" + line.substr(0, 60) + "')";
+    if (keyword == "format") {
+      std::string format;
+      words >> format;
+      if (format == "ascii") {
+        ascii = true;
+      } else if (format == "binary_little_endian" || format == "binary_big_endian") {
+        ascii = false;
+      } else {
+        failMeshFile(source, where + ": unknown format '" + format + "' (ascii, binary_little_endian or binary_big_endian)");
+      }
+    } else if (keyword == "element") {
+      finishElement();
+      std::string countWord;
+      words >> element >> countWord;
+      errno = 0;
+      char* end = nullptr;
+      count = std::strtoull(countWord.c_str(), &end, 10);
+      if (countWord.empty() || !std::isdigit(static_cast<unsigned char>(countWord[0])) || *end != '\0' ||
+          errno == ERANGE) {
+        failMeshFile(source, where + ": the element count '" + countWord.substr(0, 30) +
+                                 "' is not a non-negative integer");
+      }
+      perItem = 0;
+    } else if (keyword == "property") {
+      std::string type;
+      words >> type;
+      if (type == "list") {
+        std::string countType, itemType;
+        words >> countType >> itemType;
+        if (scalarSize(countType) == 0 || scalarSize(itemType) == 0) {
+          failMeshFile(source, where + ": unknown list property types '" + countType + " " + itemType + "'");
+        }
+        perItem += ascii ? 2 : static_cast<std::uint64_t>(scalarSize(countType));
+      } else {
+        if (scalarSize(type) == 0) failMeshFile(source, where + ": unknown property type '" + type + "'");
+        perItem += ascii ? 2 : static_cast<std::uint64_t>(scalarSize(type));
+      }
+    }
+  }
+  finishElement();
+  // The last ASCII number of the file may lack its separator.
+  if (needed > static_cast<long double>(dataBytes) + 1.0L) {
+    std::ostringstream msg;
+    msg << "the PLY header announces elements of at least " << static_cast<double>(needed)
+        << " bytes, but the file has " << dataBytes << " bytes after the header (a wrong element count?)";
+    failMeshFile(source, msg.str());
+  }
+}
+// [ply_checks]
+
 }  // namespace
 
 const std::vector<std::string>& meshFileExtensions() {
@@ -127,6 +212,7 @@ TriangleMesh parseAssimpMesh(const std::string& bytes, const std::string& source
                              const ObjLoadSettings& settings) {
   const std::string ext = lowerExtension(sourceName);
   if (ext == ".stl") checkStl(bytes, sourceName);
+  if (ext == ".ply") checkPly(bytes, sourceName);
   if (ext != ".stl" && ext != ".ply") failMeshFile(sourceName, "not an STL or PLY file (extension '" + ext + "')");
   Assimp::Importer importer;
   // Triangulate polygons; nothing else: welding and validation are stackbook's own.

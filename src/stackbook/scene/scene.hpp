@@ -153,6 +153,11 @@ nlohmann::json parseSceneJsonText(const std::string& text, const std::string& fi
 void applySceneOverride(nlohmann::json& document, const std::string& keyValue,
                         const std::string& file, const SceneLimits& limits = {});
 
+/// Why `path` cannot be read as a file, in words for a message: "no such file", "a
+/// folder, not a file", "not a regular file (a device, a pipe or a socket)"; "" if it is a
+/// regular file.
+std::string whyNotARegularFile(const std::filesystem::path& path);
+
 /// `text` printable on one line: control characters and bytes that are not valid UTF-8
 /// become `\xNN` (a path or name from the user may hold any byte string).
 std::string printable(const std::string& text);

@@ -198,6 +198,15 @@ bool validUtf8(const std::string& s) {
 
 }  // namespace
 
+std::string whyNotARegularFile(const std::filesystem::path& path) {
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (std::filesystem::is_regular_file(status)) return "";
+  if (std::filesystem::is_directory(status)) return "a folder, not a file";
+  if (std::filesystem::exists(status)) return "not a regular file (a device, a pipe or a socket)";
+  return "no such file";
+}
+
 std::string printable(const std::string& text) {
   std::string out;
   std::size_t k = 0;
@@ -257,7 +266,9 @@ json parseSceneJsonText(const std::string& text, const std::string& file, const 
 
 json readSceneJson(const std::string& path, const SceneLimits& limits) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw SceneError(path, "", "no such scene file");
+  if (const std::string why = whyNotARegularFile(path); !why.empty()) {
+    throw SceneError(path, "", why == "no such file" ? "no such scene file" : "the scene is " + why);
+  }
   const auto bytes = std::filesystem::file_size(path, ec);
   if (!ec && bytes > limits.fileBytes) {
     throw SceneError(path, "", "the file has " + std::to_string(bytes) + " bytes; a scene file may have at most " +

@@ -287,8 +287,9 @@ BuiltShape<D> buildShape(const Reader& r, const json& spec, const std::string& p
       const std::string name = r.string(need("file"), ptr + "/file");
       const std::filesystem::path path = baseDir / name;
       std::error_code ec;
-      if (!std::filesystem::is_regular_file(path, ec)) {
-        r.fail(ptr + "/file", "no such mesh file: " + path.string());
+      if (const std::string why = whyNotARegularFile(path); !why.empty()) {
+        r.fail(ptr + "/file", (why == "no such file" ? "no such mesh file: " : "the mesh file is " + why + ": ") +
+                                  path.string());
       }
       const auto bytes = std::filesystem::file_size(path, ec);
       if (!ec && bytes > r.limits().meshFileBytes) {
