@@ -48,6 +48,9 @@ const BadInput kBadInputs[] = {
     {"set_base.json", "--set \"duration=$(printf '%.0s[' $(seq 1000))\"", "/duration"},
     // 2. the library's words never reach the user
     {"number_overflow.json", "", "/duration"},
+    {"nan_literal.json", "", "line 1, column 24: not valid JSON"},
+    {"nan_literal.json", "", "JSON has no NaN or Infinity"},
+    {"infinity_literal.json", "", "JSON has no NaN or Infinity: write a finite number"},
     {"set_base.json", "--set dt=1e999", "/dt"},
     {"set_base.json", "--set bodies.x.name=a", "/bodies/x"},
     {"set_base.json", "--set bodies.-1.name=a", "/bodies/-1"},
@@ -164,13 +167,14 @@ TEST_CASE("--out is probed before the run: a file, a folder under a file, a plac
       {"/proc/stackbook_out", "cannot create the folder"},
       {"/proc/self", "cannot write files in the folder"},
   };
-  for (const auto& [out, reason] : cases) {
+  for (const auto& outAndReason : cases) {
+    const std::string out = outAndReason.first, reason = outAndReason.second;  // CAPTURE cannot take a binding
     CAPTURE(out);
     // Without -q a run prints its summary on stdout: nothing there means nothing ran.
     const Outcome o = runProgram("run '" + scene + "' --out " + out, dir);
     CHECK(o.code == kExitBadInput);
     CHECK(std::count(o.err.begin(), o.err.end(), '\n') == 1);
-    CHECK(o.err.rfind(std::string("stackbook: error: --out ") + out + ": " + reason, 0) == 0);
+    CHECK(o.err.rfind("stackbook: error: --out " + out + ": " + reason, 0) == 0);
     CHECK(o.out.empty());
   }
   // A good run leaves complete files only: no temporary name is left behind.

@@ -257,7 +257,19 @@ json parseSceneJsonText(const std::string& text, const std::string& file, const 
   JsonTextError error;
   if (!parseChecked(text, limits.jsonDepth, doc, error)) {
     if (error.syntax) {
-      throw SceneError(file, "", lineColumn(text, error.byte) + ": not valid JSON (" + error.reason + ")");
+      // NaN and Infinity are what a program that prints doubles writes; JSON has neither.
+      std::string hint;
+      const std::size_t from = error.byte > 12 ? error.byte - 12 : 0;
+      const std::string near = text.substr(from, 24);
+      for (const char* word : {"NaN", "nan", "Infinity", "inf"}) {
+        const bool badWord = error.reason.find("invalid literal") != std::string::npos ||
+                             error.reason.find("invalid number") != std::string::npos;  // -Infinity
+        if (badWord && near.find(word) != std::string::npos) {
+          hint = "; JSON has no NaN or Infinity: write a finite number";
+          break;
+        }
+      }
+      throw SceneError(file, "", lineColumn(text, error.byte) + ": not valid JSON (" + error.reason + ")" + hint);
     }
     throw SceneError(file, error.pointer, error.reason);
   }
