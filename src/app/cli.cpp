@@ -178,19 +178,14 @@ std::vector<std::string> writeOutputs(const Scene& scene, const SceneRun& run, c
 struct RunArgs {
   std::string scene;
   std::string out;
-  std::optional<double> duration;
-  std::optional<double> dt;
-  std::optional<long long> threads;
+  // Kept as the text the user wrote and checked with the scene, as --set values: "abc" or
+  // 1e999 get the same one line at /dt as in the file, and no conversion saturates.
+  std::optional<std::string> duration;
+  std::optional<std::string> dt;
+  std::optional<std::string> threads;
   std::vector<std::string> sets;
   bool quiet = false;
 };
-
-std::string formatValue(double x) {
-  std::ostringstream s;
-  s.precision(17);
-  s << x;
-  return s.str();
-}
 
 int runCommand(const RunArgs& args, bool demo) {
   std::string path;
@@ -198,9 +193,9 @@ int runCommand(const RunArgs& args, bool demo) {
   try {
     path = resolveScene(args.scene);
     std::vector<std::string> overrides = args.sets;
-    if (args.dt) overrides.push_back("dt=" + formatValue(*args.dt));
-    if (args.duration) overrides.push_back("duration=" + formatValue(*args.duration));
-    if (args.threads) overrides.push_back("solver.threads=" + std::to_string(*args.threads));
+    if (args.dt) overrides.push_back("dt=" + *args.dt);
+    if (args.duration) overrides.push_back("duration=" + *args.duration);
+    if (args.threads) overrides.push_back("solver.threads=" + *args.threads);
     scene = loadScene(path, overrides);
   } catch (const SceneError& e) {
     return reportError(e.what(), kBadInput);

@@ -186,6 +186,26 @@ TEST_CASE("--out is probed before the run: a file, a folder under a file, a plac
   }
 }
 
+TEST_CASE("--dt, --duration and --threads are checked as the scene's fields: one line at their pointer, exit 1") {
+  const std::pair<const char*, const char*> cases[] = {
+      {"--dt abc", "/dt"},
+      {"--dt 1e999", "/dt"},
+      {"--duration nan", "/duration"},
+      {"--duration -1", "/duration"},
+      {"--threads abc", "/solver/threads"},
+      {"--threads -1", "/solver/threads"},
+      {"--threads 99999999999999999999", "/solver/threads"},  // not saturated to a valid-looking number
+  };
+  for (const auto& optionAndPointer : cases) {
+    const std::string option = optionAndPointer.first;
+    CAPTURE(option);
+    const Outcome o = runProgram("run -q set_base.json " + option + " --out /tmp/stackbook_ch10_bad_inputs/out",
+                                 kCorpus / "scene");
+    checkOneLine(o, "set_base.json", optionAndPointer.second);
+    CHECK(o.err.find("9223372036854775807") == std::string::npos);
+  }
+}
+
 TEST_CASE("every scene of the corpus goes through the scene fuzz target's body without a finding") {
   for (const fs::path& file : corpusFiles("scene")) {
     if (file.extension() != ".json" && file.extension() != ".set") continue;
