@@ -15,6 +15,7 @@
 #include <sstream>
 #include <thread>
 
+#include "stackbook/output/csv.hpp"
 #include "stackbook/output/output_files.hpp"
 #include "stackbook/stacking/shock_propagation.hpp"
 #include "stackbook/stepping/traditional_step.hpp"
@@ -82,17 +83,6 @@ void rejectUnknown(const json& object, const std::vector<std::string>& known, co
     throw SceneError(file, joinPointer(pointer, it.key()),
                      "unknown field" + (close.empty() ? std::string() : " (did you mean \"" + close + "\"?)"));
   }
-}
-
-/// A CSV field, quoted when it holds a separator, a quote or a line end (RFC 4180).
-std::string csvField(const std::string& text) {
-  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) {
-    if (c == '"') quoted += '"';
-    quoted += c;
-  }
-  return quoted + '"';
 }
 
 std::string number(double x) { return output_detail::exactDecimal(x); }
@@ -757,41 +747,11 @@ std::string sweepCsvLine(const SweepSpec& spec, const SweepRow& row) {
 }
 
 std::vector<std::vector<std::string>> readSweepCsv(const std::string& csvPath) {
-  std::vector<std::vector<std::string>> rows;
   std::ifstream in(csvPath, std::ios::binary);
-  if (!in) return rows;
+  if (!in) return {};
   std::ostringstream text;
   text << in.rdbuf();
-  const std::string s = text.str();
-  std::vector<std::string> row;
-  std::string field;
-  bool quoted = false;
-  for (std::size_t k = 0; k < s.size(); ++k) {
-    const char c = s[k];
-    if (quoted) {
-      if (c == '"' && k + 1 < s.size() && s[k + 1] == '"') {
-        field += '"';
-        ++k;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        field += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      row.push_back(field);
-      field.clear();
-    } else if (c == '\n') {
-      row.push_back(field);
-      field.clear();
-      rows.push_back(row);
-      row.clear();
-    } else {
-      field += c;
-    }
-  }
-  return rows;  // a last line without its newline was cut short: it is not a row
+  return csvRecords(text.str());  // a last line without its newline was cut short: not a row
 }
 
 std::vector<std::size_t> completedRuns(const SweepSpec& spec, const std::string& csvPath) {
