@@ -13,6 +13,7 @@
 #include "stackbook/collision/broad_phase.hpp"
 #include "stackbook/collision/collision_body.hpp"
 #include "stackbook/collision/detection_counters.hpp"
+#include "stackbook/geometry/sample_chunks.hpp"
 
 namespace stackbook {
 
@@ -84,6 +85,91 @@ Vec<D> poseDirectionToWorld(const Pose<D>& pose, const Mat<D>& R, const Vec<D>& 
   }
 }
 // [pose_with_matrix]
+
+// [near_samples]
+/// The runs of consecutive surface samples of `owner` that may land in `boxB` under
+/// x -> M s + t (Eq. (7.2)), in ascending order: with culling on and chunks at hand, the runs
+/// (SampleChunks) whose box meets boxB carried back into the owner's frame, the box of
+/// M^T (boxB - t) (as Eq. (7.8) boxes a rotated box) grown by a hair of 1e-9 of the sizes
+/// involved, so that round-off, a million times smaller, cannot leave out a sample that the
+/// exact test (Eq. (7.7)) keeps. Otherwise one run of every sample. The caller still applies
+/// that exact test to each sample of a run, so the samples kept, their order and their
+/// values are those of the loop over all samples. M^T is M's inverse only for a rotation: if
+/// M^T M is off the identity by more than 1e-12 (a quaternion far from unit) every sample is
+/// in the run, and so is every sample of a shape of at most four chunks (32 samples; a 2D
+/// box has 16), where testing them all costs less than finding the runs.
+template <int D>
+class NearSampleRuns {
+ public:
+  NearSampleRuns(const Shape<D>& owner, const Aabb<D>& boxB, const Mat<D>& M, const Vec<D>& t,
+                 bool cullByBounds)
+      : count_(owner.surfaceSamples().size()), chunks_(cullByBounds ? owner.sampleChunks() : nullptr) {
+    if (chunks_ != nullptr && !(chunks_->sampleCount() == count_ && chunks_->chunks().size() > 4 &&
+                                 carryBack(boxB, M, t))) {
+      chunks_ = nullptr;
+    }
+  }
+
+  /// The next run [first, last); false when there is none left.
+  bool next(std::size_t& first, std::size_t& last) {
+    if (chunks_ != nullptr) return nextRun(first, last);
+    if (next_ > 0 || count_ == 0) return false;
+    next_ = 1;
+    first = 0;
+    last = count_;
+    visited_ = count_;
+    return true;
+  }
+
+  /// The samples in no run so far (all of them left out, once next() has returned false).
+  std::size_t skipped() const { return count_ - visited_; }
+
+ private:
+  /// The query box in the owner's frame; false when M is not a rotation or boxB is empty.
+  [[gnu::noinline]] bool carryBack(const Aabb<D>& boxB, const Mat<D>& M, const Vec<D>& t) {
+    if (boxB.isEmpty() || !((M.transpose() * M - Mat<D>::Identity()).cwiseAbs().maxCoeff() <= 1e-12)) return false;
+    const Vec<D> centre = M.transpose() * Vec<D>(boxB.center() - t);
+    const Vec<D> half = M.transpose().cwiseAbs() * Vec<D>(0.5 * boxB.extent());
+    const double hair =
+        1e-9 * (1.0 + half.maxCoeff() + centre.cwiseAbs().maxCoeff() + t.cwiseAbs().maxCoeff());
+    query_ = Aabb<D>{Vec<D>(centre.array() - half.array() - hair), Vec<D>(centre.array() + half.array() + hair)};
+    return true;
+  }
+
+  [[gnu::noinline]] bool nextRun(std::size_t& first, std::size_t& last) {
+    const std::vector<Aabb<D>>& chunks = chunks_->chunks();
+    const std::vector<Aabb<D>>& groups = chunks_->groups();
+    constexpr std::size_t G = SampleChunks<D>::groupSize;
+    constexpr std::size_t C = SampleChunks<D>::chunkSize;
+    const auto near = [&](std::size_t c) {
+      return (c % G != 0 || groups[c / G].overlaps(query_)) && chunks[c].overlaps(query_);
+    };
+    while (next_ < chunks.size()) {
+      if (next_ % G == 0 && !groups[next_ / G].overlaps(query_)) {
+        next_ += G;
+        continue;
+      }
+      if (!chunks[next_].overlaps(query_)) {
+        ++next_;
+        continue;
+      }
+      const std::size_t start = next_++;
+      while (next_ < chunks.size() && near(next_)) ++next_;
+      first = start * C;
+      last = std::min(count_, next_ * C);
+      visited_ += last - first;
+      return true;
+    }
+    return false;
+  }
+
+  std::size_t count_ = 0;
+  const SampleChunks<D>* chunks_ = nullptr;
+  Aabb<D> query_;
+  std::size_t next_ = 0;
+  std::size_t visited_ = 0;
+};
+// [near_samples]
 
 }  // namespace detail
 
@@ -191,26 +277,30 @@ void appendSamplesInside(const CollisionBody<D>& owner, int ownerIndex,
                                     settings, queries, found)
           ? 0
           : samples.size();
-  for (std::size_t k = 0; k < sampleCount; ++k) {
-    const Vec<D> xB = M * samples[k] + t;                               // Eq. (7.2)
-    if (settings.cullByBounds && !boxB.contains(xB)) {                  // Eq. (7.7)
-      ++culled;
-      continue;
+  detail::NearSampleRuns<D> runs(*owner.shape, boxB, M, t, settings.cullByBounds && sampleCount > 0);
+  for (std::size_t first = 0, last = 0; sampleCount > 0 && runs.next(first, last);) {
+    for (std::size_t k = first; k < last; ++k) {
+      const Vec<D> xB = M * samples[k] + t;                             // Eq. (7.2)
+      if (settings.cullByBounds && !boxB.contains(xB)) {                // Eq. (7.7)
+        ++culled;
+        continue;
+      }
+      ++queries;
+      const double phi = shapeB.signedDistance(xB);
+      if (std::isnan(phi)) detail::throwNanDistance<D>(shapeB, xB, penetratedIndex);
+      if (!(phi < 0.0)) continue;                                       // Eq. (7.1)
+      ++found;
+      InterferenceSample<D> sample;
+      sample.point = detail::poseToWorld<D>(owner.pose, RA, samples[k]);
+      sample.depth = phi;
+      sample.normal = detail::poseDirectionToWorld<D>(penetrated.pose, RB, shapeB.normal(xB));  // Eq. (7.3)
+      sample.owner = ownerIndex;
+      sample.other = penetratedIndex;
+      sample.sampleIndex = static_cast<int>(k);
+      out.push_back(sample);
     }
-    ++queries;
-    const double phi = shapeB.signedDistance(xB);
-    if (std::isnan(phi)) detail::throwNanDistance<D>(shapeB, xB, penetratedIndex);
-    if (!(phi < 0.0)) continue;                                         // Eq. (7.1)
-    ++found;
-    InterferenceSample<D> sample;
-    sample.point = detail::poseToWorld<D>(owner.pose, RA, samples[k]);
-    sample.depth = phi;
-    sample.normal = detail::poseDirectionToWorld<D>(penetrated.pose, RB, shapeB.normal(xB));  // Eq. (7.3)
-    sample.owner = ownerIndex;
-    sample.other = penetratedIndex;
-    sample.sampleIndex = static_cast<int>(k);
-    out.push_back(sample);
   }
+  if (sampleCount > 0) culled += static_cast<std::int64_t>(runs.skipped());
   if (counters != nullptr) {  // [samples_inside_core]
     counters->samplesTransformed += static_cast<std::int64_t>(sampleCount);
     counters->samplesCulled += culled;
@@ -317,19 +407,23 @@ void appendCandidatesInside(const CollisionBody<D>& owner, const Mat<D>& RA, con
   const Vec<D> t = RB.transpose() * Vec<D>(owner.pose.position - penetrated.pose.position);
   const std::vector<Vec<D>>& samples = owner.shape->surfaceSamples();
   std::int64_t culled = 0, queries = 0, found = 0;
-  for (std::size_t k = 0; k < samples.size(); ++k) {
-    const Vec<D> xB = M * samples[k] + t;                               // Eq. (7.2)
-    if (settings.cullByBounds && !boxB.contains(xB)) {                  // Eq. (7.7)
-      ++culled;
-      continue;
+  NearSampleRuns<D> runs(*owner.shape, boxB, M, t, settings.cullByBounds);
+  for (std::size_t first = 0, last = 0; runs.next(first, last);) {
+    for (std::size_t k = first; k < last; ++k) {
+      const Vec<D> xB = M * samples[k] + t;                             // Eq. (7.2)
+      if (settings.cullByBounds && !boxB.contains(xB)) {                // Eq. (7.7)
+        ++culled;
+        continue;
+      }
+      ++queries;
+      const double phi = shapeB.signedDistance(xB);
+      if (std::isnan(phi)) throwNanDistance<D>(shapeB, xB, penetratedIndex);
+      if (!(phi < 0.0)) continue;                                       // Eq. (7.1)
+      ++found;
+      out.push_back(InterferenceCandidate<D>{xB, phi, static_cast<int>(out.size()), static_cast<int>(k), firstOwns});
     }
-    ++queries;
-    const double phi = shapeB.signedDistance(xB);
-    if (std::isnan(phi)) throwNanDistance<D>(shapeB, xB, penetratedIndex);
-    if (!(phi < 0.0)) continue;                                         // Eq. (7.1)
-    ++found;
-    out.push_back(InterferenceCandidate<D>{xB, phi, static_cast<int>(out.size()), static_cast<int>(k), firstOwns});
   }
+  culled += static_cast<std::int64_t>(runs.skipped());
   if (counters != nullptr) {
     counters->samplesTransformed += static_cast<std::int64_t>(samples.size());
     counters->samplesCulled += culled;

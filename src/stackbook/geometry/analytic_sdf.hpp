@@ -308,7 +308,7 @@ template <int D, class Sdf>
 class AnalyticShape final : public Shape<D> {
  public:
   AnalyticShape(Sdf sdf, SurfaceMesh<D> mesh, double sampleTolerance = 1e-9)
-      : sdf_(std::move(sdf)), mesh_(std::move(mesh)) {
+      : sdf_(std::move(sdf)), mesh_(std::move(mesh)), chunks_(mesh_.vertices) {
     const double size = sdf_.bounds().extent().norm();
     for (std::size_t v = 0; v < mesh_.vertices.size(); ++v) {
       const double phi = sdf_.distance(mesh_.vertices[v]);
@@ -324,6 +324,7 @@ class AnalyticShape final : public Shape<D> {
   double signedDistance(const Vec<D>& x) const override { return sdf_.distance(x); }
   Vec<D> normal(const Vec<D>& x) const override { return sdf_.normal(x); }
   const std::vector<Vec<D>>& surfaceSamples() const override { return mesh_.vertices; }
+  const SampleChunks<D>* sampleChunks() const override { return &chunks_; }
   Aabb<D> bounds() const override { return sdf_.bounds(); }
   std::string describe() const override {
     std::ostringstream out;
@@ -369,6 +370,7 @@ class AnalyticShape final : public Shape<D> {
  private:
   Sdf sdf_;
   SurfaceMesh<D> mesh_;
+  SampleChunks<D> chunks_;
 };
 // [analytic_shape]
 

@@ -250,10 +250,11 @@ class GridShape final : public Shape<D> {
   /// Validates the mesh (naming it `name` in errors) and builds its grid.
   GridShape(SurfaceMesh<D> mesh, std::string name, const SdfGridSettings& settings = {})
       : mesh_(std::move(mesh)), name_(std::move(name)), bounds_(mesh_.bounds()),
-        grid_(buildSdfGrid<D>(mesh_, settings, name_)) {}
+        grid_(buildSdfGrid<D>(mesh_, settings, name_)), chunks_(mesh_.vertices) {}
   double signedDistance(const Vec<D>& x) const override { return grid_.value(x); }
   Vec<D> normal(const Vec<D>& x) const override { return grid_.normal(x); }
   const std::vector<Vec<D>>& surfaceSamples() const override { return mesh_.vertices; }
+  const SampleChunks<D>* sampleChunks() const override { return &chunks_; }
   /// The mesh's box, computed once at construction (the mesh is fixed from then on):
   /// the narrow phase asks for it on every query, and looping over every vertex each
   /// time made it a sixth of a formed pile's step.
@@ -275,6 +276,7 @@ class GridShape final : public Shape<D> {
   std::string name_;
   Aabb<D> bounds_;
   SdfGrid<D> grid_;
+  SampleChunks<D> chunks_;
 };
 // [grid_shape]
 

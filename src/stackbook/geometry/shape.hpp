@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "stackbook/geometry/aabb.hpp"
+#include "stackbook/geometry/sample_chunks.hpp"
 
 namespace stackbook {
 
@@ -48,6 +49,11 @@ class Shape {
   /// True when the deepest point is this shape's whole contact with a body (a strictly
   /// convex shape: sphere, disk), so that it may replace the surface samples.
   virtual bool deepestPointIsWholeContact() const { return false; }
+
+  /// Boxes around runs of consecutive surface samples (chapter 7, "Skipping far samples"),
+  /// built with the shape; null for a shape without them, whose samples the narrow phase
+  /// then transforms one by one.
+  virtual const SampleChunks<D>* sampleChunks() const { return nullptr; }
 };
 // [shape_interface]
 
