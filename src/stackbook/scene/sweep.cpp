@@ -87,6 +87,13 @@ void rejectUnknown(const json& object, const std::vector<std::string>& known, co
 
 std::string number(double x) { return output_detail::exactDecimal(x); }
 
+/// "Up" for the height-based measures (sag, bounce apex): against gravity, or the last axis
+/// when a scene has none.
+template <int D>
+Vec<D> sweepUp(const Vec<D>& gravity) {
+  return gravity.norm() > 0.0 ? Vec<D>(-gravity.normalized()) : Vec<D>(Vec<D>::Unit(D - 1));
+}
+
 std::string fileStem(const std::string& name) {
   std::string out;
   for (char c : name) out += (std::isalnum(static_cast<unsigned char>(c)) != 0 ? c : '_');
@@ -657,8 +664,7 @@ double measureError(const SweepError& e, const RunResult<D>& r, const Scene& sce
   } else if (e.quantity == "bounceApex" || e.quantity == "mirror") {
     // The same definitions as measureSweepTrajectory()'s, on the recorded poses.
     const World<D>& world = std::get<SceneBodies<D>>(scene.bodies).world;
-    Vec<D> up = Vec<D>::Unit(D - 1);
-    if (world.gravity.norm() > 0.0) up = -world.gravity.normalized();
+    const Vec<D> up = sweepUp<D>(world.gravity);
     if (e.quantity == "bounceApex") {
       bodyCheck();
       std::vector<double> heights;
@@ -682,8 +688,7 @@ double measureError(const SweepError& e, const RunResult<D>& r, const Scene& sce
   } else if (e.quantity == "drift" || e.quantity == "sag") {
     // The same definitions as measureSweepTrajectory()'s, on the recorded poses.
     const World<D>& world = std::get<SceneBodies<D>>(scene.bodies).world;
-    Vec<D> up = Vec<D>::Unit(D - 1);
-    if (world.gravity.norm() > 0.0) up = -world.gravity.normalized();
+    const Vec<D> up = sweepUp<D>(world.gravity);
     if (e.quantity == "sag") {
       bodyCheck();
       value = std::abs((rec.poses()[0][b].position - rec.poses()[last][b].position).dot(up));
