@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -181,7 +182,27 @@ TEST_CASE("the chapter's sweep specs load and and their expected values are the 
   const TorqueFreeInvariants inv = torqueFreeInvariants(I, Vec3(0.1, 10.0, 0.1));
   CHECK(box.errors.at(0).expected ==
         doctest::Approx(polhodePeriod(I, inv.energy, inv.momentumSquared).period).epsilon(1e-12));
-  for (const SweepSpec* spec : {&ball, &disk, &box}) CHECK_NOTHROW(loadScene(spec->scene));
+  // A ball resting on the top ball (centre 0.6 m up the axis) of a bone tilted by 3 degrees:
+  // its centre 0.3 + 0.1 m straight above that ball's centre.
+  const double tilt = 3.0 * M_PI / 180.0;
+  const SweepSpec grid3 = loadSweepSpec(dir + "sdf_resolution_3d_sweep.json");
+  CHECK(grid3.errors.at(0).expected == doctest::Approx(0.6 * std::cos(tilt) + 0.4).epsilon(1e-15));
+  const Scene resting = loadScene(grid3.scene);
+  CHECK(std::get<SceneBodies<3>>(resting.bodies).world.bodies.at(1).position.x() == doctest::Approx(0.6 * std::sin(tilt)).epsilon(1e-15));
+  const SweepSpec samples3 = loadSweepSpec(dir + "samples_3d_sweep.json");
+  CHECK(samples3.errors.at(0).expected == doctest::Approx(5.0 * v0 / 7.0).epsilon(1e-15));
+  for (const SweepSpec* spec : {&ball, &disk, &box, &grid3, &samples3}) CHECK_NOTHROW(loadScene(spec->scene));
+}
+
+TEST_CASE("a plot labels a knob value briefly: 4 digits, a time step by its reciprocal, words as written") {
+  CHECK(sweepValueLabel("0.016666666666666666") == "1/60");
+  CHECK(sweepValueLabel("0.0020833333333333333") == "1/480");
+  CHECK(sweepValueLabel("0.001") == "0.001");
+  CHECK(sweepValueLabel("0.0005") == "0.0005");
+  CHECK(sweepValueLabel("16") == "16");
+  CHECK(sweepValueLabel("0.123456") == "0.1235");  // not a reciprocal: rounded, not renamed
+  CHECK(sweepValueLabel("true") == "true");
+  CHECK(sweepValueLabel("\"deepestPoint\"") == "\"deepestPoint\"");
 }
 
 TEST_CASE("the Pareto front keeps the runs no other run beats on both cost and error") {

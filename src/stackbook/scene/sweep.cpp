@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <mutex>
@@ -945,11 +946,26 @@ std::string sweepParetoTable(const SweepSpec& spec, const std::string& csvPath) 
   return md.str();
 }
 
+std::string sweepValueLabel(const std::string& value) {
+  char* end = nullptr;
+  const double v = std::strtod(value.c_str(), &end);
+  if (value.empty() || end != value.c_str() + value.size() || !std::isfinite(v)) return value;
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", v);
+  // A time step such as 1/60 s has no short decimal: name it by its reciprocal.
+  if (std::strtod(text, nullptr) != v && v > 0.0 && v < 1.0) {
+    const double n = std::round(1.0 / v);
+    if (n >= 2.0 && n <= 1e6 && std::abs(1.0 / n - v) <= 1e-12 * v) {
+      std::snprintf(text, sizeof text, "1/%.0f", n);
+    }
+  }
+  return text;
+}
+
 std::vector<std::string> plotSweep(const SweepSpec& spec, const std::string& csvPath, const std::string& prefix) {
   const auto rows = readSweepCsv(csvPath);
   if (rows.size() < 2) throw std::runtime_error("plotSweep: '" + csvPath + "' has no rows");
   const std::size_t costColumn = 8, firstError = 9;
-  // Lines: one per config, points in the order of the first knob's values.
   // Lines: one per engine and config, points in the order of the first knob's values; with
   // peers in the CSV each line is titled by its engine too.
   std::map<std::string, std::vector<std::size_t>> lines;
@@ -964,7 +980,11 @@ std::vector<std::string> plotSweep(const SweepSpec& spec, const std::string& csv
     const std::string key = rows[r][2] + "\t" + rows[r][3];
     if (lines.find(key) == lines.end()) {
       configs.push_back(key);
-      titles[key] = !anyPeer ? rows[r][3] : rows[r][2] + (rows[r][3] == "-" ? "" : ": " + rows[r][3]);
+      std::string config = rows[r][3];
+      for (std::size_t at = config.find(';'); at != std::string::npos; at = config.find(';', at + 2)) {
+        config.replace(at, 1, "; ");
+      }
+      titles[key] = !anyPeer ? config : rows[r][2] + (config == "-" ? "" : ": " + config);
     }
     lines[key].push_back(r);
   }
@@ -972,8 +992,13 @@ std::vector<std::string> plotSweep(const SweepSpec& spec, const std::string& csv
   // noenhanced: scene and knob names are shown as written (gnuplot's enhanced text would
   // turn the underscore of "tumbling_box" into a subscript); the key goes below the plot so
   // that long configuration names do not narrow it.
+  // Errors span decades, so the error axis is labelled in powers of ten. Each line has its own
+  // colour; a peer's points are squares, stackbook's circles.
   gp << "set terminal svg size 720,480 dynamic noenhanced font 'sans,12'\nset logscale xy\nset grid\n"
-     << "set xlabel 'ms of computation per simulated second'\nset key below\n";
+     << "set format x '%g'\nset format y '%.0e'\n"
+     << "set xlabel 'ms of computation per simulated second'\nset key below font 'sans,10'\n";
+  static const char* const kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
+                                         "#17becf", "#8c564b", "#e377c2", "#bcbd22", "#7f7f7f"};
   std::vector<std::string> svgs;
   for (std::size_t e = 0; e < spec.errors.size(); ++e) {
     const std::string name = fileStem(spec.errors[e].name);
@@ -986,7 +1011,7 @@ std::vector<std::string> plotSweep(const SweepSpec& spec, const std::string& csv
       for (std::size_t r : lines[c]) {
         const double x = std::strtod(rows[r][costColumn].c_str(), nullptr);
         const double y = std::strtod(rows[r][firstError + e].c_str(), nullptr);
-        out << number(x) << " " << number(std::max(y, 1e-17)) << " \"" << rows[r][5] << "\"\n";
+        out << number(x) << " " << number(std::max(y, 1e-17)) << " \"" << sweepValueLabel(rows[r][5]) << "\"\n";
         cost.push_back(x);
         error.push_back(y);
         rowOf.push_back(r);
@@ -1007,7 +1032,9 @@ std::vector<std::string> plotSweep(const SweepSpec& spec, const std::string& csv
     gp << "set output '" << svg << "'\nset ylabel '" << spec.errors[e].name << "'\nset title '"
        << spec.name << ": " << spec.knobs.front().key << " along each line'\nplot ";
     for (std::size_t c = 0; c < configs.size(); ++c) {
-      gp << "'" << data << "' index " << c << " using 1:2 with linespoints pt 7 title '" << titles[configs[c]]
+      const bool peer = configs[c].rfind(spec.engine + "\t", 0) != 0;
+      gp << "'" << data << "' index " << c << " using 1:2 with linespoints pt " << (peer ? 5 : 7) << " lc rgb '"
+         << kColours[c % std::size(kColours)] << "' title '" << titles[configs[c]]
          << "', '" << data << "' index " << c << " using 1:2:3 with labels offset 0.8,0.6 font 'sans,9' notitle, ";
     }
     gp << "'" << data << "' index " << configs.size()

@@ -235,6 +235,10 @@ std::vector<std::string> plotSweep(const SweepSpec& spec, const std::string& csv
 /// run gets there.
 std::string sweepParetoTable(const SweepSpec& spec, const std::string& csvPath);
 
+/// A knob value as a plot labels its point: a number in at most 4 significant digits, or, when
+/// that would round it, as 1/n for a reciprocal of an integer (a time step of 1/60 s); any
+/// other value (true, "samples") as written.
+std::string sweepValueLabel(const std::string& value);
 /// The Pareto front of (cost, error) points: indices of the points no other point beats
 /// on both (lower or equal cost and error, one strictly), sorted by cost.
 std::vector<std::size_t> paretoFront(const std::vector<double>& cost, const std::vector<double>& error);
