@@ -16,6 +16,8 @@
 #include <sstream>
 #include <thread>
 
+#include <Eigen/Geometry>
+
 #include "stackbook/output/csv.hpp"
 #include "stackbook/output/output_files.hpp"
 #include "stackbook/stacking/shock_propagation.hpp"
@@ -31,7 +33,8 @@ const std::vector<std::string> kQuantities = {"position",       "velocity",    "
                                               "energyDrift",    "maxPenetration", "rollingStart",
                                               "flipPeriod",     "drift",       "sag",
                                               "windowed",       "bounceApex",  "mirror",
-                                              "standing"};
+                                              "standing",       "distance",    "speed",
+                                              "precession"};
 
 /// The peers a spec may name and each one's knobs (whether or not this program has them built).
 const std::vector<std::pair<std::string, std::vector<std::string>>> kPeerKnobs = {
@@ -167,7 +170,8 @@ SweepSpec parseSweepSpec(const json& doc, const std::string& file) {
       throw SceneError(file, p + "/quantity",
                        "unknown quantity \"" + out.quantity + "\"" +
                            (close.empty() ? std::string(" (position, velocity, angularVelocity, energyDrift, "
-                                                        "maxPenetration, rollingStart, flipPeriod, drift, sag, windowed, bounceApex, mirror, standing)")
+                                                        "maxPenetration, rollingStart, flipPeriod, drift, sag, windowed, bounceApex, mirror, standing, "
+                                                        "distance, speed, precession)")
                                           : " (did you mean \"" + close + "\"?)"));
     }
     out.name = e.contains("name") ? requireString(e.at("name"), p + "/name", file) : out.quantity;
@@ -392,7 +396,8 @@ bool sweepHigherIsBetter(const SweepError& e) { return e.quantity == "standing";
 bool sweepNeedsEveryStep(const SweepSpec& spec) {
   for (const SweepError& e : spec.errors) {
     if (e.quantity == "energyDrift" || e.quantity == "rollingStart" || e.quantity == "flipPeriod" ||
-        e.quantity == "maxPenetration" || e.quantity == "bounceApex" || e.quantity == "standing") {
+        e.quantity == "maxPenetration" || e.quantity == "bounceApex" || e.quantity == "standing" ||
+        e.quantity == "precession") {
       return true;
     }
   }
@@ -449,6 +454,38 @@ double sweepMirrorError(const std::vector<Eigen::Vector3d>& start, const std::ve
     worst = std::max(worst, (reflect(end[i]) - end[partner]).norm());
   }
   return worst;
+}
+
+double sweepPrecessionError(const std::vector<double>& times, const std::vector<Eigen::Matrix3d>& rotations,
+                            const Eigen::Vector3d& omega0, const Eigen::Vector3d& inertia, int axis,
+                            double tolerance, const std::string& file) {
+  if (times.empty() || rotations.size() != times.size()) {
+    throw SceneError(file, "", "the precession error needs one orientation per frame");
+  }
+  if (axis < 0 || axis > 2) throw SceneError(file, "", "the precession error needs a body axis 0, 1 or 2");
+  const double i1 = inertia[(axis + 1) % 3], i2 = inertia[(axis + 2) % 3];
+  if (!(std::abs(i1 - i2) <= tolerance * std::max(std::abs(i1), std::abs(i2)))) {
+    throw SceneError(file, "", "the precession error needs an axisymmetric body: the moments about the axes other "
+                               "than " + std::to_string(axis) + " are " + number(i1) + " and " + number(i2));
+  }
+  const Eigen::Matrix3d& r0 = rotations.front();
+  const Eigen::Vector3d angularMomentum = r0 * inertia.asDiagonal() * r0.transpose() * omega0;
+  const Eigen::Vector3d a0 = r0.col(axis);
+  const double l = angularMomentum.norm();
+  const double sinCone = l > 0.0 ? angularMomentum.cross(a0).norm() / l : 0.0;
+  const double arc = sinCone * l * (times.back() - times.front()) / i1;
+  if (!(arc > 0.0)) {
+    throw SceneError(file, "", "the precession error needs a spin off the symmetry axis and a run of some length: "
+                               "the closed-form axis does not move");
+  }
+  const Eigen::Vector3d n = angularMomentum / l;
+  double worst = 0.0;
+  for (std::size_t f = 0; f < times.size(); ++f) {
+    const Eigen::Vector3d exact = Eigen::AngleAxisd(l * (times[f] - times.front()) / i1, n) * a0;
+    const Eigen::Vector3d a = rotations[f].col(axis);
+    worst = std::max(worst, std::atan2(a.cross(exact).norm(), a.dot(exact)));
+  }
+  return worst / arc;
 }
 
 double measureSweepTrajectory(const SweepError& e, const SweepTrajectory& t, const std::string& file) {
@@ -550,6 +587,23 @@ double measureSweepTrajectory(const SweepError& e, const SweepTrajectory& t, con
   } else if (e.quantity == "sag") {
     bodyCheck();
     value = std::abs((t.frames[0][b].position - t.frames[last][b].position).dot(up));
+  } else if (e.quantity == "distance") {
+    bodyCheck();
+    value = (t.frames[last][b].position - t.frames[0][b].position).norm();
+  } else if (e.quantity == "speed") {
+    bodyCheck();
+    value = t.frames[last][b].velocity.norm();
+  } else if (e.quantity == "precession") {
+    bodyCheck();
+    if (t.dimension == 2) throw SceneError(file, "", "error \"" + e.name + "\": precession needs a 3D scene");
+    if (t.inertia.size() != bodies) {
+      throw SceneError(file, "", "error \"" + e.name + "\": precession needs the bodies' moments of inertia");
+    }
+    std::vector<Eigen::Matrix3d> rotations;
+    rotations.reserve(t.frames.size());
+    for (const auto& frame : t.frames) rotations.push_back(frame[b].rotation);
+    value = sweepPrecessionError(t.times, rotations, t.frames[0][b].angularVelocity, t.inertia[b], e.axis,
+                                 e.tolerance, file);
   }
   if (!e.hasExpected) return value;
   const double diff = std::abs(value - e.expected);
@@ -685,6 +739,25 @@ double measureError(const SweepError& e, const RunResult<D>& r, const Scene& sce
         isStatic.push_back(world.bodies[k].isStatic());
       }
       value = sweepMirrorError(start, end, isStatic, Eigen::Vector3d::Unit(e.axis), e.tolerance, file);
+    }
+  } else if (e.quantity == "distance" || e.quantity == "speed") {
+    // The same definitions as measureSweepTrajectory()'s, on the recorded poses.
+    bodyCheck();
+    value = e.quantity == "distance" ? (rec.poses()[last][b].position - rec.poses()[0][b].position).norm()
+                                     : rec.velocities()[last][b].norm();
+  } else if (e.quantity == "precession") {
+    bodyCheck();
+    if constexpr (D == 2) {
+      throw SceneError(file, "", "error \"" + e.name + "\": precession needs a 3D scene");
+    } else {
+      const World<D>& world = std::get<SceneBodies<D>>(scene.bodies).world;
+      std::vector<Eigen::Matrix3d> rotations;
+      rotations.reserve(rec.frameCount());
+      for (std::size_t f = 0; f < rec.frameCount(); ++f) {
+        rotations.push_back(rec.poses()[f][b].orientation.toRotationMatrix());
+      }
+      value = sweepPrecessionError(rec.times(), rotations, rec.angularVelocities()[0][b], world.bodies[b].inertia,
+                                   e.axis, e.tolerance, file);
     }
   } else if (e.quantity == "drift" || e.quantity == "sag") {
     // The same definitions as measureSweepTrajectory()'s, on the recorded poses.
@@ -875,7 +948,8 @@ std::string boundText(const SweepError& e, double bound) {
   char text[48];
   if (sweepHigherIsBetter(e)) {
     std::snprintf(text, sizeof text, "at least %g%s%s", bound, e.unit.empty() ? "" : " ", e.unit.c_str());
-  } else if (e.relative && e.hasExpected) {
+  } else if ((e.relative && e.hasExpected) || e.quantity == "energyDrift" || e.quantity == "precession") {
+    // A fraction: relative to the closed form, or relative by definition.
     std::snprintf(text, sizeof text, "%g %%", bound * 100.0);
   } else {
     std::snprintf(text, sizeof text, "%g%s%s", bound, e.unit.empty() ? "" : " ", e.unit.c_str());

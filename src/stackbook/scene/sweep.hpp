@@ -54,7 +54,16 @@ struct SweepKnob {
 /// - `windowed`: the self-consistency error of Erez, Tassa and Todorov (ICRA 2015): the mean
 ///   over `windows` windows of `window` seconds of the largest distance between a dynamic
 ///   body's centre in the run and in a run at dt / `refine`, each window restarted from the
-///   fine run's state (m); chaos is then not counted as error.
+///   fine run's state (m); chaos is then not counted as error;
+/// - `distance`: how far body `body`'s centre ended from its start, |x(T) - x(0)| (m; the
+///   distance a ball rolled down an incline, along whatever direction the slope has);
+/// - `speed`: the magnitude of body `body`'s velocity at the end, |v(T)| (m/s);
+/// - `precession`: how far an axisymmetric body's symmetry axis (body axis `axis`, whose two
+///   other principal moments must agree within `tolerance`, relative) strays from the closed
+///   form of torque-free precession, which turns it about the fixed angular momentum L at
+///   |L| / I1: the largest angle over the frames between the two axes, divided by the arc the
+///   closed-form axis travels over the run, sin(cone angle) |L| T / I1 (sweepPrecessionError();
+///   for a phase error alone this is the relative error of the precession angle; 3D).
 /// With `expected` given the error is |value - expected|, divided by |expected| when
 /// `relative` (the default), else the value itself.
 struct SweepError {
@@ -68,7 +77,8 @@ struct SweepError {
   double expected = 0.0;
   bool relative = true;
   /// The accuracies the table of cheapest settings asks for (sweepParetoTable()): relative
-  /// errors as fractions (1e-2 is 1 %), absolute ones in `unit`.
+  /// errors (against `expected`, and the relative-by-definition `energyDrift` and `precession`) as
+  /// fractions, shown in percent (1e-2 is 1 %), absolute ones in `unit`.
   std::vector<double> within = {1e-2, 1e-3, 1e-4};
   std::string unit;  ///< of an absolute error, e.g. "m" (shown in the table)
   int windows = 10;      ///< `windowed`: how many windows
@@ -155,6 +165,9 @@ struct SweepTrajectory {
   std::vector<double> times;                         ///< per frame
   std::vector<std::vector<SweepBodyState>> frames;   ///< per frame, per body
   std::vector<double> energies;                      ///< per frame: kinetic + potential (-m g.x)
+  /// Per body, the principal moments of inertia about its body axes (empty when the engine
+  /// does not report them; the `precession` measure needs them).
+  std::vector<Eigen::Vector3d> inertia;
   double maxPenetration = 0.0;                       ///< deepest overlap over the frames (m)
 };
 /// The error `e` of a run given as frames (what runSweepRun() measures for stackbook, from
@@ -166,7 +179,8 @@ double measureSweepTrajectory(const SweepError& e, const SweepTrajectory& t, con
 bool sweepHigherIsBetter(const SweepError& e);
 
 /// Whether the spec's errors need a frame after every step (energy drift, rolling start, flip
-/// period, penetration, bounce apexes); otherwise the scene's own frame rate is kept.
+/// period, penetration, bounce apexes, standing, precession); otherwise the scene's own frame
+/// rate is kept.
 bool sweepNeedsEveryStep(const SweepSpec& spec);
 
 /// The k-th apex (k >= 1) of a series of heights at increasing times: the k-th frame f with
@@ -174,6 +188,19 @@ bool sweepNeedsEveryStep(const SweepSpec& spec);
 /// the three (exact for a free flight under symplectic Euler, whose positions lie on a
 /// parabola); +infinity if the series has fewer than k apexes.
 double sweepApexHeight(const std::vector<double>& times, const std::vector<double>& heights, int k);
+
+/// The `precession` error of an axisymmetric body in free flight (no torque): its body axis
+/// `axis` is the symmetry axis, and its principal moments `inertia` must have the two others
+/// equal within `tolerance` (relative; else a SceneError naming `file`). From the first frame's
+/// orientation `rotations[0]` (body to world) and world angular velocity `omega0`, the angular
+/// momentum is L = R0 diag(I) R0^T omega0 and the closed form turns the symmetry axis a0 about
+/// L at the constant rate |L| / I1 (I1 the transverse moment): a(t) = Rot(L, |L| t / I1) a0.
+/// The error is the largest angle over the frames between the body's axis and a(t), divided by
+/// sin(angle between a0 and L) |L| T / I1, the arc a(t) travels over the run (T its length).
+/// A SceneError if the spin is along the symmetry axis (nothing precesses) or the run is empty.
+double sweepPrecessionError(const std::vector<double>& times, const std::vector<Eigen::Matrix3d>& rotations,
+                            const Eigen::Vector3d& omega0, const Eigen::Vector3d& inertia, int axis,
+                            double tolerance, const std::string& file);
 
 /// The mirror error of a structure: every dynamic body's start position reflected in the plane
 /// through their mean start position with unit normal `normal` must be another dynamic body's
