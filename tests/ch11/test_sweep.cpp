@@ -205,6 +205,40 @@ TEST_CASE("a plot labels a knob value briefly: 4 digits, a time step by its reci
   CHECK(sweepValueLabel("\"deepestPoint\"") == "\"deepestPoint\"");
 }
 
+TEST_CASE("the summary across sweeps keeps per scene and accuracy the cheapest run of every sweep of that scene") {
+  // Two sweeps of the same scene, rows written here: the cheapest run within each accuracy is
+  // taken over both, named with its sweep and its fixed overrides; a peer's likewise.
+  const fs::path dir = sweepScratch("summary");
+  write(dir / "fall.json", kFallScene);
+  write(dir / "a.json", R"({"name": "a", "scene": "fall.json", "knobs": [{"key": "dt", "values": [0.004, 0.002, 0.001]}],
+    "errors": [{"name": "height", "quantity": "position", "body": 0, "axis": 2, "expected": 0.95}]})");
+  write(dir / "b.json", R"({"name": "b", "scene": "fall.json", "set": ["solver.contactIterations=5"],
+    "knobs": [{"key": "dt", "values": [0.004, 0.002, 0.001]}],
+    "errors": [{"name": "height", "quantity": "position", "body": 0, "axis": 2, "expected": 0.95}]})");
+  const SweepSpec a = loadSweepSpec((dir / "a.json").string()), b = loadSweepSpec((dir / "b.json").string());
+  write(dir / "a.csv", sweepCsvHeader(a) +
+                           "0,fall.json,stackbook,-,dt,0.004,25,0.4,10,0.02\n"
+                           "1,fall.json,stackbook,-,dt,0.002,50,0.4,20,0.005\n"
+                           "2,fall.json,stackbook,-,dt,0.001,100,0.4,40,0.0004\n"
+                           "3,fall.json,Box2D 2.4.1,velocityIterations=8,dt,0.004,25,0.04,1,0.003\n");
+  write(dir / "b.csv", sweepCsvHeader(b) +
+                           "0,fall.json,stackbook,-,dt,0.004,25,0.3,7.5,0.03\n"
+                           "1,fall.json,stackbook,-,dt,0.002,50,0.3,15,0.008\n"
+                           "2,fall.json,stackbook,-,dt,0.001,100,0.3,30,0.0009\n");
+  const std::string table = sweepSummaryTable({a, b}, {(dir / "a.csv").string(), (dir / "b.csv").string()});
+  std::istringstream lines(table);
+  std::vector<std::string> line;
+  for (std::string l; std::getline(lines, l);) line.push_back(l);
+  REQUIRE(line.size() == 5);  // header, rule, 1 %, 0.1 %, 0.01 %
+  CHECK(line[0].find("cheapest peer run") != std::string::npos);
+  CHECK(line[2] == "| fall.json | height (position against 0.95) | 1 % | dt = 0.002, solver.contactIterations=5 (b) | "
+                   "0.008 | 15 | Box2D 2.4.1: dt = 0.004, velocityIterations=8 (a) | 0.003 | 1 |");
+  CHECK(line[3] == "| fall.json | height (position against 0.95) | 0.1 % | dt = 0.001, solver.contactIterations=5 (b) | "
+                   "0.0009 | 30 | none | | |");
+  CHECK(line[4] == "| fall.json | height (position against 0.95) | 0.01 % | none | | | none | | |");
+  CHECK_THROWS(sweepSummaryTable({a, b}, {(dir / "a.csv").string()}));
+}
+
 TEST_CASE("the Pareto front keeps the runs no other run beats on both cost and error") {
   const std::vector<double> cost = {1.0, 2.0, 3.0, 2.5, 4.0};
   const std::vector<double> error = {0.5, 0.2, 0.3, 0.1, 0.1};

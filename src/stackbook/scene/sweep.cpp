@@ -14,6 +14,7 @@
 #include <mutex>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <thread>
 
 #include <Eigen/Geometry>
@@ -961,6 +962,31 @@ std::string settingText(const std::vector<std::string>& row) {
   return row[4] + " = " + row[5] + (row[3] == "-" ? "" : ", " + row[3]);
 }
 
+/// The cheapest row (index into `rows`, 0 if none) of a sweep CSV whose error column `e` meets
+/// `bound`: of the spec's engine (peer false) or of any peer (peer true).
+std::size_t cheapestWithin(const std::vector<std::vector<std::string>>& rows, const SweepSpec& spec, std::size_t e,
+                           double bound, bool peer) {
+  std::size_t best = 0;
+  double bestCost = std::numeric_limits<double>::infinity();
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    if (rows[r].size() != rows[0].size() || (rows[r][2] != spec.engine) != peer) continue;
+    const double err = std::strtod(rows[r][9 + e].c_str(), nullptr);
+    const double cost = std::strtod(rows[r][8].c_str(), nullptr);
+    const bool meets = sweepHigherIsBetter(spec.errors[e]) ? err >= bound : err <= bound;
+    if (meets && cost < bestCost) {
+      best = r;
+      bestCost = cost;
+    }
+  }
+  return best;
+}
+
+std::string shortNumber(double x) {
+  char t[32];
+  std::snprintf(t, sizeof t, "%.3g", x);
+  return t;
+}
+
 }  // namespace
 
 std::string sweepParetoTable(const SweepSpec& spec, const std::string& csvPath) {
@@ -973,29 +999,11 @@ std::string sweepParetoTable(const SweepSpec& spec, const std::string& csvPath) 
   md << "| error | within | cheapest setting | its error | ms per simulated s |";
   if (anyPeer) md << " cheapest peer run | its error | ms per simulated s |";
   md << "\n|---|---|---|---|---|" << (anyPeer ? "---|---|---|" : "") << "\n";
-  const auto fmt = [](double x) {
-    char t[32];
-    std::snprintf(t, sizeof t, "%.3g", x);
-    return std::string(t);
-  };
+  const auto fmt = shortNumber;
   for (std::size_t e = 0; e < spec.errors.size(); ++e) {
     for (const double bound : spec.errors[e].within) {
       // The cheapest row within the bound, of stackbook (peer false) or of any peer.
-      const auto cheapest = [&](bool peer) {
-        std::size_t best = 0;
-        double bestCost = std::numeric_limits<double>::infinity();
-        for (std::size_t r = 1; r < rows.size(); ++r) {
-          if (rows[r].size() != rows[0].size() || (rows[r][2] != spec.engine) != peer) continue;
-          const double err = std::strtod(rows[r][9 + e].c_str(), nullptr);
-          const double cost = std::strtod(rows[r][8].c_str(), nullptr);
-          const bool meets = sweepHigherIsBetter(spec.errors[e]) ? err >= bound : err <= bound;
-          if (meets && cost < bestCost) {
-            best = r;
-            bestCost = cost;
-          }
-        }
-        return best;
-      };
+      const auto cheapest = [&](bool peer) { return cheapestWithin(rows, spec, e, bound, peer); };
       md << "| " << spec.errors[e].name << " | " << boundText(spec.errors[e], bound) << " | ";
       const std::size_t ours = cheapest(false);
       if (ours == 0) {
@@ -1034,6 +1042,71 @@ std::string sweepValueLabel(const std::string& value) {
     }
   }
   return text;
+}
+
+std::string sweepSummaryTable(const std::vector<SweepSpec>& specs, const std::vector<std::string>& csvPaths) {
+  if (specs.size() != csvPaths.size()) throw std::invalid_argument("sweepSummaryTable: one CSV per spec");
+  // One line per (scene, error, accuracy), in the order first met; each keeps the cheapest
+  // stackbook row and the cheapest peer row over every sweep of that scene.
+  struct Best {
+    double cost = std::numeric_limits<double>::infinity(), error = 0.0;
+    std::string setting;
+  };
+  struct Line {
+    std::string scene, error, within;
+    Best ours, theirs;
+  };
+  std::vector<Line> lines;
+  bool anyPeer = false;
+  for (std::size_t s = 0; s < specs.size(); ++s) {
+    const SweepSpec& spec = specs[s];
+    const auto rows = readSweepCsv(csvPaths[s]);
+    std::string fixed;
+    for (const std::string& set : spec.sets) fixed += ", " + set;
+    const std::string scene = std::filesystem::path(spec.scene).filename().string();
+    for (std::size_t e = 0; e < spec.errors.size(); ++e) {
+      const SweepError& err = spec.errors[e];
+      const std::string measure = err.name + " (" + err.quantity +
+                                  (err.hasExpected ? " against " + shortNumber(err.expected) : std::string()) + ")";
+      for (const double bound : err.within) {
+        const std::string within = boundText(err, bound);
+        auto it = std::find_if(lines.begin(), lines.end(), [&](const Line& l) {
+          return l.scene == scene && l.error == measure && l.within == within;
+        });
+        if (it == lines.end()) {
+          lines.push_back(Line{scene, measure, within, {}, {}});
+          it = lines.end() - 1;
+        }
+        for (const bool peer : {false, true}) {
+          const std::size_t r = cheapestWithin(rows, spec, e, bound, peer);
+          if (r == 0) continue;
+          const double cost = std::strtod(rows[r][8].c_str(), nullptr);
+          Best& best = peer ? it->theirs : it->ours;
+          if (cost < best.cost) {
+            best.cost = cost;
+            best.error = std::strtod(rows[r][9 + e].c_str(), nullptr);
+            best.setting = (peer ? rows[r][2] + ": " : std::string()) + settingText(rows[r]) + fixed +
+                           " (" + spec.name + ")";
+          }
+          if (peer) anyPeer = true;
+        }
+      }
+    }
+  }
+  std::ostringstream md;
+  md << "| scene | error | within | cheapest stackbook setting (sweep) | its error | ms per simulated s |";
+  if (anyPeer) md << " cheapest peer run (sweep) | its error | ms per simulated s |";
+  md << "\n|---|---|---|---|---|---|" << (anyPeer ? "---|---|---|" : "") << "\n";
+  const auto cell = [](const Best& b) {
+    return b.setting.empty() ? std::string("none | | |")
+                             : b.setting + " | " + shortNumber(b.error) + " | " + shortNumber(b.cost) + " |";
+  };
+  for (const Line& l : lines) {
+    md << "| " << l.scene << " | " << l.error << " | " << l.within << " | " << cell(l.ours);
+    if (anyPeer) md << " " << cell(l.theirs);
+    md << "\n";
+  }
+  return md.str();
 }
 
 std::vector<std::string> plotSweep(const SweepSpec& spec, const std::string& csvPath, const std::string& prefix) {

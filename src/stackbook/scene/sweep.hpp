@@ -266,6 +266,14 @@ std::string sweepParetoTable(const SweepSpec& spec, const std::string& csvPath);
 /// that would round it, as 1/n for a reciprocal of an integer (a time step of 1/60 s); any
 /// other value (true, "samples") as written.
 std::string sweepValueLabel(const std::string& value);
+
+/// The table of sweepParetoTable() across several sweeps, one line per scene, error measure and
+/// accuracy: the cheapest stackbook run and the cheapest peer run within that accuracy over every
+/// sweep of the same scene file (matched by the file's name) with an error of the same name,
+/// quantity and expected value, each named with its knob, its fixed `set` overrides and its
+/// sweep. `csvPaths[k]` is the CSV of `specs[k]`.
+std::string sweepSummaryTable(const std::vector<SweepSpec>& specs, const std::vector<std::string>& csvPaths);
+
 /// The Pareto front of (cost, error) points: indices of the points no other point beats
 /// on both (lower or equal cost and error, one strictly), sorted by cost.
 std::vector<std::size_t> paretoFront(const std::vector<double>& cost, const std::vector<double>& error);
