@@ -171,6 +171,62 @@ class NearSampleRuns {
 };
 // [near_samples]
 
+// [sample_loop]
+/// The work of one direction, as DetectionCounters counts it.
+struct SampleWork {
+  std::int64_t culled = 0;   ///< samples left out by the box test or by the runs
+  std::int64_t queries = 0;  ///< phi evaluations
+  std::int64_t found = 0;    ///< samples with phi < 0
+};
+
+/// The loop of one direction, the same for the full query (appendSamplesInside()) and the
+/// lazy one (deepestApproachingInPair()): the samples of `owner` in the runs that may reach
+/// boxB (NearSampleRuns), in sample order, each carried into the penetrated body's frame
+/// (Eq. (7.2)) and box-tested (Eq. (7.7)) before phi is asked; inside(k, xB, phi) receives
+/// each sample k with phi < 0 (Eq. (7.1)), and the caller decides what to record.
+template <int D, class Inside>
+void forEachSampleInside(const Shape<D>& owner, const Shape<D>& shapeB, int penetratedIndex, const Aabb<D>& boxB,
+                         const Mat<D>& M, const Vec<D>& t, bool cullByBounds, SampleWork& work, Inside&& inside) {
+  const std::vector<Vec<D>>& samples = owner.surfaceSamples();
+  if (samples.empty()) return;
+  // Local copies, so that the calls in the loop cannot be assumed to change them and they
+  // stay in registers (the same values, so the same bits).
+  const Mat<D> Mk = M;
+  const Vec<D> tk = t;
+  const Aabb<D> box = boxB;
+  std::int64_t culled = 0, queries = 0, found = 0;
+  NearSampleRuns<D> runs(owner, box, Mk, tk, cullByBounds);
+  for (std::size_t first = 0, last = 0; runs.next(first, last);) {
+    for (std::size_t k = first; k < last; ++k) {
+      const Vec<D> xB = Mk * samples[k] + tk;                           // Eq. (7.2)
+      if (cullByBounds && !box.contains(xB)) {                          // Eq. (7.7)
+        ++culled;
+        continue;
+      }
+      ++queries;
+      const double phi = shapeB.signedDistance(xB);
+      if (std::isnan(phi)) throwNanDistance<D>(shapeB, xB, penetratedIndex);
+      if (!(phi < 0.0)) continue;                                       // Eq. (7.1)
+      ++found;
+      inside(k, xB, phi);
+    }
+  }
+  work.culled += culled + static_cast<std::int64_t>(runs.skipped());
+  work.queries += queries;
+  work.found += found;
+}
+// [sample_loop]
+
+/// Adds one direction's work to `counters` (when given): `transformed` samples went
+/// through the loop.
+inline void addSampleWork(DetectionCounters* counters, std::size_t transformed, const SampleWork& work) {
+  if (counters == nullptr) return;
+  counters->samplesTransformed += static_cast<std::int64_t>(transformed);
+  counters->samplesCulled += work.culled;
+  counters->phiQueries += work.queries;
+  counters->interferenceSamples += work.found;
+}
+
 }  // namespace detail
 
 // [surface_query]
@@ -271,42 +327,27 @@ void appendSamplesInside(const CollisionBody<D>& owner, int ownerIndex,
   const Vec<D> t = RB.transpose() * Vec<D>(owner.pose.position - penetrated.pose.position);
 
   const std::vector<Vec<D>>& samples = owner.shape->surfaceSamples();
-  std::int64_t culled = 0, queries = 0, found = 0;
+  detail::SampleWork work;
   const std::size_t sampleCount =
       detail::appendDeepestPoint<D>(owner, ownerIndex, penetrated, penetratedIndex, M, t, out,
-                                    settings, queries, found)
+                                    settings, work.queries, work.found)
           ? 0
           : samples.size();
-  detail::NearSampleRuns<D> runs(*owner.shape, boxB, M, t, settings.cullByBounds && sampleCount > 0);
-  for (std::size_t first = 0, last = 0; sampleCount > 0 && runs.next(first, last);) {
-    for (std::size_t k = first; k < last; ++k) {
-      const Vec<D> xB = M * samples[k] + t;                             // Eq. (7.2)
-      if (settings.cullByBounds && !boxB.contains(xB)) {                // Eq. (7.7)
-        ++culled;
-        continue;
-      }
-      ++queries;
-      const double phi = shapeB.signedDistance(xB);
-      if (std::isnan(phi)) detail::throwNanDistance<D>(shapeB, xB, penetratedIndex);
-      if (!(phi < 0.0)) continue;                                       // Eq. (7.1)
-      ++found;
-      InterferenceSample<D> sample;
-      sample.point = detail::poseToWorld<D>(owner.pose, RA, samples[k]);
-      sample.depth = phi;
-      sample.normal = detail::poseDirectionToWorld<D>(penetrated.pose, RB, shapeB.normal(xB));  // Eq. (7.3)
-      sample.owner = ownerIndex;
-      sample.other = penetratedIndex;
-      sample.sampleIndex = static_cast<int>(k);
-      out.push_back(sample);
-    }
+  if (sampleCount > 0) {
+    detail::forEachSampleInside<D>(*owner.shape, shapeB, penetratedIndex, boxB, M, t, settings.cullByBounds, work,
+                                   [&](std::size_t k, const Vec<D>& xB, double phi) {
+                                     InterferenceSample<D> sample;
+                                     sample.point = detail::poseToWorld<D>(owner.pose, RA, samples[k]);
+                                     sample.depth = phi;
+                                     sample.normal = detail::poseDirectionToWorld<D>(penetrated.pose, RB,
+                                                                                     shapeB.normal(xB));  // Eq. (7.3)
+                                     sample.owner = ownerIndex;
+                                     sample.other = penetratedIndex;
+                                     sample.sampleIndex = static_cast<int>(k);
+                                     out.push_back(sample);
+                                   });
   }
-  if (sampleCount > 0) culled += static_cast<std::int64_t>(runs.skipped());
-  if (counters != nullptr) {  // [samples_inside_core]
-    counters->samplesTransformed += static_cast<std::int64_t>(sampleCount);
-    counters->samplesCulled += culled;
-    counters->phiQueries += queries;
-    counters->interferenceSamples += found;
-  }
+  detail::addSampleWork(counters, sampleCount, work);  // [samples_inside_core]
 }
 // [samples_inside]
 
@@ -405,31 +446,13 @@ void appendCandidatesInside(const CollisionBody<D>& owner, const Mat<D>& RA, con
   const Aabb<D> boxB = shapeB.bounds().inflated(settings.cullMargin);
   const Mat<D> M = RB.transpose() * RA;
   const Vec<D> t = RB.transpose() * Vec<D>(owner.pose.position - penetrated.pose.position);
-  const std::vector<Vec<D>>& samples = owner.shape->surfaceSamples();
-  std::int64_t culled = 0, queries = 0, found = 0;
-  NearSampleRuns<D> runs(*owner.shape, boxB, M, t, settings.cullByBounds);
-  for (std::size_t first = 0, last = 0; runs.next(first, last);) {
-    for (std::size_t k = first; k < last; ++k) {
-      const Vec<D> xB = M * samples[k] + t;                             // Eq. (7.2)
-      if (settings.cullByBounds && !boxB.contains(xB)) {                // Eq. (7.7)
-        ++culled;
-        continue;
-      }
-      ++queries;
-      const double phi = shapeB.signedDistance(xB);
-      if (std::isnan(phi)) throwNanDistance<D>(shapeB, xB, penetratedIndex);
-      if (!(phi < 0.0)) continue;                                       // Eq. (7.1)
-      ++found;
-      out.push_back(InterferenceCandidate<D>{xB, phi, static_cast<int>(out.size()), static_cast<int>(k), firstOwns});
-    }
-  }
-  culled += static_cast<std::int64_t>(runs.skipped());
-  if (counters != nullptr) {
-    counters->samplesTransformed += static_cast<std::int64_t>(samples.size());
-    counters->samplesCulled += culled;
-    counters->phiQueries += queries;
-    counters->interferenceSamples += found;
-  }
+  SampleWork work;
+  forEachSampleInside<D>(*owner.shape, shapeB, penetratedIndex, boxB, M, t, settings.cullByBounds, work,
+                         [&](std::size_t k, const Vec<D>& xB, double phi) {
+                           out.push_back(InterferenceCandidate<D>{xB, phi, static_cast<int>(out.size()),
+                                                                  static_cast<int>(k), firstOwns});
+                         });
+  addSampleWork(counters, owner.shape->surfaceSamples().size(), work);
 }
 
 }  // namespace detail
