@@ -4,10 +4,13 @@
 /// (phi < 0), in both directions, and the choice of the deepest approaching one
 /// (\ref ch07, Eqs. (7.1)-(7.7)).
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "stackbook/collision/broad_phase.hpp"
@@ -500,14 +503,41 @@ std::optional<InterferenceSample<D>> deepestApproachingInPair(
   detail::appendCandidatesInside<D>(a, Ra, b, Rb, pair.second, true, scratch, settings, counters);
   detail::appendCandidatesInside<D>(b, Rb, a, Ra, pair.first, false, scratch, settings, counters);
   if (counters != nullptr) ++counters->pairQueries;
-  // Insertion sort by (depth, order): a handful of candidates per pair, no allocation.
-  for (std::size_t i = 1; i < scratch.size(); ++i) {
-    InterferenceCandidate<D> c = scratch[i];
-    std::size_t j = i;
-    for (; j > 0 && (c.depth < scratch[j - 1].depth); --j) scratch[j] = scratch[j - 1];
-    scratch[j] = c;
+  // The candidates by (depth, order): a stable sort by depth, since a candidate's position
+  // in scratch is its order. Only (depth, position) keys are ordered, never the candidates
+  // themselves; no depth is NaN (phi < 0) and positions are unique, so the keys are totally
+  // ordered and any correct ordering of them visits the candidates in the same sequence.
+  // A few keys (a 2D pair has a handful) are insertion-sorted on the stack; more are taken
+  // one at a time from a min-heap (one buffer per thread, like scratch), so that a pair whose
+  // deepest candidates approach costs the candidates evaluated rather than a full sort.
+  using Key = std::pair<double, int>;
+  constexpr std::size_t kFewKeys = 16;
+  const std::size_t count = scratch.size();
+  std::array<Key, kFewKeys> few;
+  thread_local std::vector<Key> many;
+  const auto later = [](const Key& x, const Key& y) { return y < x; };
+  const bool useHeap = count > kFewKeys;
+  if (useHeap) {
+    many.clear();
+    for (std::size_t i = 0; i < count; ++i) many.emplace_back(scratch[i].depth, static_cast<int>(i));
+    std::make_heap(many.begin(), many.end(), later);
+  } else {
+    for (std::size_t i = 0; i < count; ++i) {
+      const Key key(scratch[i].depth, static_cast<int>(i));
+      std::size_t j = i;
+      for (; j > 0 && key.first < few[j - 1].first; --j) few[j] = few[j - 1];
+      few[j] = key;
+    }
   }
-  for (const InterferenceCandidate<D>& c : scratch) {
+  for (std::size_t next = 0; next < count; ++next) {
+    std::size_t index = 0;
+    if (useHeap) {
+      std::pop_heap(many.begin(), many.end() - static_cast<std::ptrdiff_t>(next), later);
+      index = static_cast<std::size_t>(many[count - 1 - next].second);
+    } else {
+      index = static_cast<std::size_t>(few[next].second);
+    }
+    const InterferenceCandidate<D>& c = scratch[index];
     const CollisionBody<D>& owner = c.firstOwns ? a : b;
     const CollisionBody<D>& other = c.firstOwns ? b : a;
     InterferenceSample<D> s;
