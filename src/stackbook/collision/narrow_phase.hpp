@@ -183,14 +183,15 @@ struct SampleWork {
 };
 
 /// The loop of one direction, the same for the full query (appendSamplesInside()) and the
-/// lazy one (deepestApproachingInPair()): the samples of `owner` in the runs that may reach
+/// lazy one (deepestApproachingInPair()): the samples of `owner` (its surfaceSamples()) in the runs that may reach
 /// boxB (NearSampleRuns), in sample order, each carried into the penetrated body's frame
 /// (Eq. (7.2)) and box-tested (Eq. (7.7)) before phi is asked; inside(k, xB, phi) receives
 /// each sample k with phi < 0 (Eq. (7.1)), and the caller decides what to record.
 template <int D, class Inside>
-void forEachSampleInside(const Shape<D>& owner, const Shape<D>& shapeB, int penetratedIndex, const Aabb<D>& boxB,
-                         const Mat<D>& M, const Vec<D>& t, bool cullByBounds, SampleWork& work, Inside&& inside) {
-  const std::vector<Vec<D>>& samples = owner.surfaceSamples();
+[[gnu::always_inline]] inline void forEachSampleInside(const Shape<D>& owner, const std::vector<Vec<D>>& samples,
+                                                       const Shape<D>& shapeB, int penetratedIndex,
+                                                       const Aabb<D>& boxB, const Mat<D>& M, const Vec<D>& t,
+                                                       bool cullByBounds, SampleWork& work, Inside&& inside) {
   if (samples.empty()) return;
   // Local copies, so that the calls in the loop cannot be assumed to change them and they
   // stay in registers (the same values, so the same bits).
@@ -337,7 +338,7 @@ void appendSamplesInside(const CollisionBody<D>& owner, int ownerIndex,
           ? 0
           : samples.size();
   if (sampleCount > 0) {
-    detail::forEachSampleInside<D>(*owner.shape, shapeB, penetratedIndex, boxB, M, t, settings.cullByBounds, work,
+    detail::forEachSampleInside<D>(*owner.shape, samples, shapeB, penetratedIndex, boxB, M, t, settings.cullByBounds, work,
                                    [&](std::size_t k, const Vec<D>& xB, double phi) {
                                      InterferenceSample<D> sample;
                                      sample.point = detail::poseToWorld<D>(owner.pose, RA, samples[k]);
@@ -449,13 +450,14 @@ void appendCandidatesInside(const CollisionBody<D>& owner, const Mat<D>& RA, con
   const Aabb<D> boxB = shapeB.bounds().inflated(settings.cullMargin);
   const Mat<D> M = RB.transpose() * RA;
   const Vec<D> t = RB.transpose() * Vec<D>(owner.pose.position - penetrated.pose.position);
+  const std::vector<Vec<D>>& samples = owner.shape->surfaceSamples();
   SampleWork work;
-  forEachSampleInside<D>(*owner.shape, shapeB, penetratedIndex, boxB, M, t, settings.cullByBounds, work,
+  forEachSampleInside<D>(*owner.shape, samples, shapeB, penetratedIndex, boxB, M, t, settings.cullByBounds, work,
                          [&](std::size_t k, const Vec<D>& xB, double phi) {
                            out.push_back(InterferenceCandidate<D>{xB, phi, static_cast<int>(out.size()),
                                                                   static_cast<int>(k), firstOwns});
                          });
-  addSampleWork(counters, owner.shape->surfaceSamples().size(), work);
+  addSampleWork(counters, samples.size(), work);
 }
 
 }  // namespace detail
