@@ -21,6 +21,13 @@ namespace {
 /// The chapter's settings (passAsContactStage()) with `sweepsPerLevel` sweeps per level.
 StepSettings passOnly(int sweepsPerLevel = 20) { return passAsContactStage(StepSettings{}, sweepsPerLevel); }
 
+/// The short pair loops (passAsContactStageShortLoops()) with `sweepsPerLevel` sweeps per level.
+StepSettings shortLoops(int sweepsPerLevel = 20) {
+  StepSettings s = passAsContactStageShortLoops();
+  s.shock.sweepsPerLevel = sweepsPerLevel;  // the ramp follows: the preset leaves it empty
+  return s;
+}
+
 /// Run `steps` steps of stackingStep (with whatever effects the settings leave inferred).
 template <int D>
 StepCounters runSteps(World<D>& world, const StepSettings& settings, int steps) {
@@ -122,6 +129,35 @@ TEST_CASE("a level sweep that applies no impulse ends its level") {
 }
 // [test_pass_early_exit]
 
+// [test_short_loops_early_exit]
+TEST_CASE("with short pair loops a level sweep that applies no impulse still ends its level") {
+  // The same claim and bound as with PhysBAM's caps: a visit cut short leaves what it did
+  // not finish to the level's next sweep, and the level must still settle in fewer than
+  // half the sweeps it is allowed.
+  World<2> world = stacks::boxStack<2>(3, Material{0.0, 0.5, 0.0});
+  const StepCounters c = runSteps<2>(world, shortLoops(50), 100);
+  CHECK(c.shock.sweeps < 100 * 3 * 50 / 2);
+  CHECK(c.shock.sweeps >= 100 * 3);
+  CHECK(c.shock.pairConvergences > 0);  // the tolerance ended some visits before the cap
+}
+// [test_short_loops_early_exit]
+
+TEST_CASE("the short pair loops are the pass as the contact stage with caps of 5 and a tolerance of 0.2") {
+  const StepSettings s = passAsContactStageShortLoops();
+  const StepSettings pass = passAsContactStage();
+  CHECK(s.shock.replacesContactStage);
+  CHECK(s.shock.sweepsPerLevel == pass.shock.sweepsPerLevel);
+  CHECK(s.frictionCone == FrictionConeRule::StepTotal);
+  CHECK(s.shock.pairIterations == 5);
+  CHECK(s.collisionPairIterations == 5);
+  CHECK(s.shock.pairImpulseTolerance == 0.2);
+  CHECK(s.pairImpulseTolerance == 0.2);
+  StepSettings base;
+  base.dt = 1.0 / 60.0;
+  CHECK(passAsContactStageShortLoops(base).dt == base.dt);  // the rest of base is kept
+  CHECK_NOTHROW(validateStepSettings(s));
+}
+
 }  // TEST_SUITE
 
 // The longer simulations (together about a minute and a half under the sanitizers).
@@ -173,5 +209,22 @@ TEST_CASE_TEMPLATE("with the pass as the contact stage a stack of 10 boxes stand
   CHECK(g.maxSpeed > 1e3 * p.maxSpeed);
 }
 // [test_pass_stack]
+
+// [test_short_loops_stack]
+TEST_CASE_TEMPLATE("with short pair loops a stack of 10 boxes still stands still to 1e-9 m", Dim, In2D, In3D) {
+  // Caps of 2 break this claim (the appendix's table); caps of 5 ended at 0.2 of the
+  // visit's first impulse must keep it: the same tiers as with PhysBAM's caps, exact rest
+  // to T2 (1e-9 m) and speeds below 1e-6 of g dt.
+  constexpr int D = Dim::value;
+  const World<D> start = stacks::boxStack<D>(10, Material{0.0, 0.5, 0.0});
+  World<D> world = start;
+  runSteps<D>(world, passAsContactStageShortLoops(), 200);
+  const stacks::StackState<D> p = stacks::measureStack<D>(start, world, 1, 10);
+  const double gdt = stacks::kG * StepSettings{}.dt;
+  CHECK(p.maxSpeed < 1e-6 * gdt);
+  CHECK(p.drift < 1e-9);
+  CHECK(std::abs(p.sag) < 1e-9);
+}
+// [test_short_loops_stack]
 
 }  // TEST_SUITE
