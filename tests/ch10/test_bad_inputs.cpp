@@ -56,6 +56,7 @@ const BadInput kBadInputs[] = {
     {"set_base.json", "--set bodies.-1.name=a", "/bodies/-1"},
     {"set_base.json", "--set 'a~b=1'", "/a~b"},
     {"set_base.json", "--set dt.x=1", "/dt/x"},
+    {"set_base.json", "--set solver.preset=shortLoops", "/solver/preset"},
     {"set_base.json", "--set \"$(printf 'bodies.1.name=\\377\\376')\"", "/bodies/1/name"},
     {"set_base.json", "--set \"$(printf 'description=\\377')\"", "/description"},
     {"invalid_utf8_name.json", "", "line 1"},

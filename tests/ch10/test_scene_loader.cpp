@@ -11,6 +11,7 @@
 #include "stackbook/geometry/mesh_nonconvex.hpp"
 #include "stackbook/geometry/mesh_primitives.hpp"
 #include "stackbook/scene/scene.hpp"
+#include "stackbook/stacking/shock_propagation.hpp"
 #include "support/dimensions.hpp"
 
 using namespace stackbook;
@@ -263,6 +264,40 @@ TEST_CASE("Solver and effect settings reach the step settings") {
   CHECK(*s.settings.effects.friction == false);
   CHECK(*s.settings.effects.shockPropagation == true);
   CHECK_FALSE(s.settings.effects.gravity.has_value());
+}
+
+TEST_CASE("A solver preset is applied first and the scene's other solver fields change it") {
+  // "passAsContactShortLoops" is passAsContactStageShortLoops() on the scene's dt; a field
+  // beside it wins, and the preset's ramp follows a changed sweep count.
+  const json doc = json::parse(R"({"dimension": 2, "dt": 0.0025,
+    "solver": {"preset": "passAsContactShortLoops", "collisionPairIterations": 7, "shock": {"sweepsPerLevel": 4}},
+    "bodies": [{"shape": {"type": "disk", "radius": 1}}]})");
+  const Scene s = parseScene(doc, "p.json", ".");
+  StepSettings base;
+  base.dt = 0.0025;
+  const StepSettings preset = passAsContactStageShortLoops(base);
+  CHECK(s.settings.dt == 0.0025);
+  CHECK(s.settings.shock.replacesContactStage);
+  CHECK(s.settings.frictionCone == FrictionConeRule::StepTotal);
+  CHECK(s.settings.shock.pairIterations == preset.shock.pairIterations);
+  CHECK(s.settings.shock.pairImpulseTolerance == preset.shock.pairImpulseTolerance);
+  CHECK(s.settings.pairImpulseTolerance == preset.pairImpulseTolerance);
+  CHECK(s.settings.collisionPairIterations == 7);
+  CHECK(s.settings.shock.sweepsPerLevel == 4);
+  CHECK(s.settings.shock.restitutionAt(4) == 0.0);
+
+  const json pass = json::parse(R"({"dimension": 2, "solver": {"preset": "passAsContact"},
+    "bodies": [{"shape": {"type": "disk", "radius": 1}}]})");
+  const Scene p = parseScene(pass, "q.json", ".");
+  CHECK(p.settings.shock.replacesContactStage);
+  CHECK(p.settings.shock.sweepsPerLevel == passAsContactStage().shock.sweepsPerLevel);
+  CHECK(p.settings.shock.pairIterations == StepSettings{}.shock.pairIterations);
+
+  const json gbf = json::parse(R"({"dimension": 2, "solver": {"preset": "gbf"},
+    "bodies": [{"shape": {"type": "disk", "radius": 1}}]})");
+  const Scene g = parseScene(gbf, "g.json", ".");
+  CHECK_FALSE(g.settings.shock.replacesContactStage);
+  CHECK(g.settings.shock.sweepsPerLevel == StepSettings{}.shock.sweepsPerLevel);
 }
 
 TEST_CASE("An override sets a nested field and a bare word becomes a string") {

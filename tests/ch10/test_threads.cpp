@@ -165,7 +165,13 @@ TEST_CASE("A step is bit for bit the same for 1, 2 and 4 threads: the pass as th
   checkThreadCounts("many_pyramids_2d", 30,
                     {"solver.shock.replacesContactStage=true", "solver.shock.sweepsPerLevel=6",
                      "solver.frictionCone=\"step\""});
-  checkThreadCounts("pyramid_3d", 15, {"solver.frictionCone=\"step\""});
+  // GBF's step (the contact stage, then the pass) with one cone per step, at the scene's
+  // former dt; the scene as bundled runs the short pair loops, tested below.
+  checkThreadCounts("pyramid_3d", 15, {"solver.preset=gbf", "dt=0.002", "solver.frictionCone=\"step\""});
+}
+
+TEST_CASE("A step is bit for bit the same for 1, 2 and 4 threads: the short pair loops of the bundled pyramids") {
+  checkThreadCounts("pyramid_3d", 15);  // "preset": "passAsContactShortLoops", dt = 1/60
 }
 
 TEST_CASE("A step is bit for bit the same for 1, 2 and 4 threads: the loop tolerances, the implicit "

@@ -8,6 +8,7 @@
 
 #include "stackbook/scene/scene.hpp"
 #include "stackbook/scene/scene_reader.hpp"
+#include "stackbook/stacking/shock_propagation.hpp"
 
 namespace stackbook {
 
@@ -122,8 +123,21 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
                   {"collisionIterations", "collisionPairIterations", "contactIterations",
                    "contactPairIterations", "contactRestitution", "shock", "order", "impulsePoint",
                    "impulsePointNormalCosine", "frictionCone", "rotation", "surfaceQuery", "threads", "sleep",
-                   "pairImpulseTolerance", "stageApproachTolerance"},
+                   "pairImpulseTolerance", "stageApproachTolerance", "preset"},
                   "the solver settings");
+  // A preset (chapter 9) sets several fields at once; it is applied first, so that the
+  // scene's other solver fields change it.
+  if (const json* v = member(solver, "preset")) {
+    const std::string ptr = p + "/preset";
+    const std::string word = r.string(*v, ptr);
+    if (word == "passAsContact") {
+      s = passAsContactStage(s);
+    } else if (word == "passAsContactShortLoops") {
+      s = passAsContactStageShortLoops(s);
+    } else if (word != "gbf") {
+      r.fail(ptr, "must be \"gbf\", \"passAsContact\" or \"passAsContactShortLoops\", got \"" + word + "\"");
+    }
+  }
   // Threads (chapter 10): 0 is every hardware thread; any count gives the same result.
   if (const json* v = member(solver, "threads")) s.parallel.threads = r.integer(*v, p + "/threads", 0, 1024);
   // Sleeping (chapter 8): off unless the scene asks for it.
