@@ -243,12 +243,14 @@ int main(int argc, char** argv) {
       const BoxScene& s = e.boxes;
       add("stackbook", false, [s] { return makeStackbookBoxes(s, StackbookConfig::Defaults); });
       add("stackbook pass", false, [s] { return makeStackbookBoxes(s, StackbookConfig::PassAsContactStage); });
+      add("stackbook short", false, [s] { return makeStackbookBoxes(s, StackbookConfig::ShortLoops); });
       if (s.dimension == 2 && haveBox2d()) add("Box2D", true, [s] { return makeBox2d(s); });
       if (s.dimension == 3 && haveBullet()) add("Bullet", true, [s] { return makeBullet(s); });
     } else {
       const PileSpec& p = e.pile;
       add("stackbook", false, [p] { return makeStackbookPile(p, StackbookConfig::Defaults); });
       if (pilePass) add("stackbook pass", false, [p] { return makeStackbookPile(p, StackbookConfig::PassAsContactStage); });
+      if (pilePass) add("stackbook short", false, [p] { return makeStackbookPile(p, StackbookConfig::ShortLoops); });
     }
     // Body count and dt without building anything in this process (its memory would be
     // counted in every child's peak).

@@ -11,7 +11,7 @@ namespace peers {
 struct Row {
   std::string scene;        ///< key, e.g. "pyramid2d_20"
   std::string description;  ///< what was run, with its size
-  std::string engine;       ///< "stackbook", "stackbook pass", "Box2D 2.4.1", ...
+  std::string engine;       ///< "stackbook", "stackbook pass", "stackbook short", "Box2D 2.4.1", ...
   bool isPeer = false;
   int bodies = 0;
   double dt = 0.0;

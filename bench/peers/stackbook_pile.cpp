@@ -42,7 +42,7 @@ class StackbookPile final : public Engine {
     const Scene scene = loadScene(pile.file, pile.overrides);
     world_ = std::get<SceneBodies<D>>(scene.bodies).world;
     const StepSettings formSettings = scene.settings;
-    settings_ = config == StackbookConfig::PassAsContactStage ? passAsContactStage(scene.settings) : scene.settings;
+    settings_ = stackbookSettings(config, scene.settings);
     halfDiagonal_.resize(world_.bodies.size());
     for (std::size_t i = 0; i < world_.bodies.size(); ++i) {
       const Aabb<D> box = world_.shapes[i]->bounds();

@@ -1,9 +1,9 @@
 #pragma once
 /// \file
 /// \brief One engine running one box scene (peers_bench, and the peers of `stackbook sweep`,
-/// chapter 11): stackbook (its defaults, or the pass as the contact stage), Box2D 2.4 or
-/// Bullet 3. The caller times step() and asks for the states or the accuracy; each adapter
-/// builds the scene from the same description (box_scenes.hpp).
+/// chapter 11): stackbook (its defaults, the pass as the contact stage, or that with short
+/// pair loops), Box2D 2.4 or Bullet 3. The caller times step() and asks for the states or
+/// the accuracy; each adapter builds the scene from the same description (box_scenes.hpp).
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,6 +13,7 @@
 
 namespace stackbook {
 struct StepCounters;
+struct StepSettings;
 }
 
 namespace peers {
@@ -62,11 +63,15 @@ class BoxEngine : public Engine {
   long steps_ = 0;  ///< steps since timing started (each adapter's step() counts them)
 };
 
-/// The two stackbook configurations of the table.
+/// The three stackbook configurations of the table.
 enum class StackbookConfig {
-  Defaults,          ///< StepSettings{} with shock propagation (stackingStep)
-  PassAsContactStage ///< passAsContactStage(): 20 sweeps per level, one cone per step
+  Defaults,            ///< StepSettings{} with shock propagation (stackingStep)
+  PassAsContactStage,  ///< passAsContactStage(): 20 sweeps per level, one cone per step
+  ShortLoops           ///< passAsContactStageShortLoops(): that with pair loops of 5, ended at 0.2
 };
+
+/// The settings of a configuration, from `base` (its dt and threads are kept).
+stackbook::StepSettings stackbookSettings(StackbookConfig config, const stackbook::StepSettings& base);
 
 std::unique_ptr<Engine> makeStackbookBoxes(const BoxScene& scene, StackbookConfig config);
 

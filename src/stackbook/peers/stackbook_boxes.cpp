@@ -29,7 +29,7 @@ template <int D>
 class StackbookBoxes final : public BoxEngine {
  public:
   StackbookBoxes(const BoxScene& scene, StackbookConfig config) : BoxEngine(scene) {
-    settings_ = config == StackbookConfig::PassAsContactStage ? passAsContactStage() : StepSettings{};
+    settings_ = stackbookSettings(config, StepSettings{});
     settings_.dt = scene.dt;
     world_.gravity = scene.gravityVector().head<D>();
     const Material material{scene.restitution, scene.friction, 0.0};  // pairs take the smaller mu: Eq. (8.4)
@@ -119,6 +119,15 @@ class StackbookBoxes final : public BoxEngine {
 };
 
 }  // namespace
+
+StepSettings stackbookSettings(StackbookConfig config, const StepSettings& base) {
+  switch (config) {
+    case StackbookConfig::PassAsContactStage: return passAsContactStage(base);
+    case StackbookConfig::ShortLoops: return passAsContactStageShortLoops(base);
+    case StackbookConfig::Defaults: break;
+  }
+  return base;
+}
 
 std::unique_ptr<Engine> makeStackbookBoxes(const BoxScene& scene, StackbookConfig config) {
   if (scene.dimension == 2) return std::make_unique<StackbookBoxes<2>>(scene, config);
