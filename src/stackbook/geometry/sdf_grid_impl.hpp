@@ -62,14 +62,56 @@ void SdfGrid<D>::locate(const Vec<D>& x, Index& cell, Vec<D>& t) const {
 // [grid_interpolate]
 template <int D>
 double SdfGrid<D>::interpolate(const Vec<D>& x) const {
-  Index cell;
-  Vec<D> t;
-  locate(x, cell, t);
+  static_assert(D == 2 || D == 3);
+  // The cell and the local coordinates t as locate() finds them, and the corners' linear
+  // indices as the cell's plus the axis strides: the same cell, the same t, the same
+  // weights (cornerWeight()'s products, factor by factor) and the same sum in the same
+  // corner order, so the same bits, written out for D = 2 and 3 so that no loop or branch
+  // runs per corner. For s >= 0 (x in the grid box, the only case value() asks for)
+  // truncation is the floor; any other s (a NaN) takes locate() itself.
+  std::array<double, D> t;
+  std::int64_t base = 0;
+  const auto axis = [&](int k) {
+    const std::size_t kk = static_cast<std::size_t>(k);
+    const double s = (x[k] - origin_[k]) / h_;
+    int c = 0;
+    if (s >= 0.0 && s < 2147483647.0) {
+      c = std::min(static_cast<int>(s), n_[kk] - 2);
+    } else {
+      Index cell;
+      Vec<D> local;
+      locate(x, cell, local);
+      c = cell[kk];
+    }
+    t[kk] = std::clamp(s - c, 0.0, 1.0);
+    base += strides_[kk] * c;
+  };
   double phi = 0.0;
-  for (unsigned mask = 0; mask < (1u << D); ++mask) {  // the 2^D corners, Eq. (6.11)
-    Index corner = cell;
-    for (int k = 0; k < D; ++k) corner[k] += (mask >> k) & 1u;
-    phi += detail::cornerWeight<D>(mask, t) * nodeValue(corner);
+  if constexpr (D == 2) {  // the 2^D corners, Eq. (6.11); bit k of the corner is axis k
+    axis(0);
+    axis(1);
+    const double* v = values_.data() + base;
+    const std::int64_t s1 = strides_[1];
+    const double t0 = t[0], t1 = t[1], u0 = 1.0 - t0, u1 = 1.0 - t1;
+    phi += u0 * u1 * v[0];
+    phi += t0 * u1 * v[1];
+    phi += u0 * t1 * v[s1];
+    phi += t0 * t1 * v[s1 + 1];
+  } else if constexpr (D == 3) {
+    axis(0);
+    axis(1);
+    axis(2);
+    const double* v = values_.data() + base;
+    const std::int64_t s1 = strides_[1], s2 = strides_[2];
+    const double t0 = t[0], t1 = t[1], t2 = t[2], u0 = 1.0 - t0, u1 = 1.0 - t1, u2 = 1.0 - t2;
+    phi += u0 * u1 * u2 * v[0];
+    phi += t0 * u1 * u2 * v[1];
+    phi += u0 * t1 * u2 * v[s1];
+    phi += t0 * t1 * u2 * v[s1 + 1];
+    phi += u0 * u1 * t2 * v[s2];
+    phi += t0 * u1 * t2 * v[s2 + 1];
+    phi += u0 * t1 * t2 * v[s2 + s1];
+    phi += t0 * t1 * t2 * v[s2 + s1 + 1];
   }
   return phi;
 }
