@@ -512,10 +512,14 @@ std::optional<InterferenceSample<D>> deepestApproachingInPair(
   // A few keys (a 2D pair has a handful) are insertion-sorted on the stack; more are taken
   // one at a time from a min-heap (one buffer per thread, like scratch), so that a pair whose
   // deepest candidates approach costs the candidates evaluated rather than a full sort.
+  // The few keys' two halves are left uninitialised: the sort writes entry i before it
+  // reads it, and nothing reads past `count` (an array of pairs would be zeroed, 256 bytes,
+  // on every query).
   using Key = std::pair<double, int>;
   constexpr std::size_t kFewKeys = 16;
   const std::size_t count = scratch.size();
-  std::array<Key, kFewKeys> few;
+  double fewDepth[kFewKeys];
+  int fewPosition[kFewKeys];
   thread_local std::vector<Key> many;
   const auto later = [](const Key& x, const Key& y) { return y < x; };
   const bool useHeap = count > kFewKeys;
@@ -525,10 +529,14 @@ std::optional<InterferenceSample<D>> deepestApproachingInPair(
     std::make_heap(many.begin(), many.end(), later);
   } else {
     for (std::size_t i = 0; i < count; ++i) {
-      const Key key(scratch[i].depth, static_cast<int>(i));
+      const double depth = scratch[i].depth;
       std::size_t j = i;
-      for (; j > 0 && key.first < few[j - 1].first; --j) few[j] = few[j - 1];
-      few[j] = key;
+      for (; j > 0 && depth < fewDepth[j - 1]; --j) {
+        fewDepth[j] = fewDepth[j - 1];
+        fewPosition[j] = fewPosition[j - 1];
+      }
+      fewDepth[j] = depth;
+      fewPosition[j] = static_cast<int>(i);
     }
   }
   for (std::size_t next = 0; next < count; ++next) {
@@ -537,7 +545,7 @@ std::optional<InterferenceSample<D>> deepestApproachingInPair(
       std::pop_heap(many.begin(), many.end() - static_cast<std::ptrdiff_t>(next), later);
       index = static_cast<std::size_t>(many[count - 1 - next].second);
     } else {
-      index = static_cast<std::size_t>(few[next].second);
+      index = static_cast<std::size_t>(fewPosition[next]);
     }
     const InterferenceCandidate<D>& c = scratch[index];
     const CollisionBody<D>& owner = c.firstOwns ? a : b;
