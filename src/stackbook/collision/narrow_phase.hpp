@@ -101,6 +101,15 @@ Vec<D> poseDirectionToWorld(const Pose<D>& pose, const Mat<D>& R, const Vec<D>& 
 /// M^T M is off the identity by more than 1e-12 (a quaternion far from unit) every sample is
 /// in the run, and so is every sample of a shape of at most four chunks (32 samples; a 2D
 /// box has 16), where testing them all costs less than finding the runs.
+///
+/// A chunk whose box meets the carried-back box is also carried forward: the box of M c + t
+/// with half sizes |M| h (c, h the chunk box's centre and half sizes, |M| entrywise) must
+/// meet boxB, grown by the same kind of hair. For every sample s of the chunk,
+/// |M (s - c)| <= |M| h componentwise, so M s + t lies in that box: a chunk that fails
+/// either test holds no sample the exact test keeps. The two boxes are the two families of
+/// face axes of the separating-axis test of the chunk box against boxB; when the bodies are
+/// turned relative to each other each one alone is loose (the axis box of a turned box),
+/// and together they leave out most of the chunks that one lets through.
 template <int D>
 class NearSampleRuns {
  public:
@@ -136,7 +145,21 @@ class NearSampleRuns {
     const double hair =
         1e-9 * (1.0 + half.maxCoeff() + centre.cwiseAbs().maxCoeff() + t.cwiseAbs().maxCoeff());
     query_ = Aabb<D>{Vec<D>(centre.array() - half.array() - hair), Vec<D>(centre.array() + half.array() + hair)};
+    M_ = M;
+    absM_ = M.cwiseAbs();
+    t_ = t;
+    boxB_ = boxB;
+    scaleB_ = 1.0 + t.cwiseAbs().maxCoeff() + boxB.lower.cwiseAbs().maxCoeff() + boxB.upper.cwiseAbs().maxCoeff();
     return true;
+  }
+
+  /// The carried-forward test: the box of M a + t over a in `a` (owner frame) meets boxB.
+  bool meetsForward(const Aabb<D>& a) const {
+    const Vec<D> centre = M_ * a.center() + t_;
+    const Vec<D> half = absM_ * Vec<D>(0.5 * a.extent());
+    const double hair = 1e-9 * (scaleB_ + half.maxCoeff() + centre.cwiseAbs().maxCoeff());
+    return ((centre - half).array() - hair <= boxB_.upper.array()).all() &&
+           (boxB_.lower.array() <= (centre + half).array() + hair).all();
   }
 
   [[gnu::noinline]] bool nextRun(std::size_t& first, std::size_t& last) {
@@ -144,15 +167,15 @@ class NearSampleRuns {
     const std::vector<Aabb<D>>& groups = chunks_->groups();
     constexpr std::size_t G = SampleChunks<D>::groupSize;
     constexpr std::size_t C = SampleChunks<D>::chunkSize;
-    const auto near = [&](std::size_t c) {
-      return (c % G != 0 || groups[c / G].overlaps(query_)) && chunks[c].overlaps(query_);
-    };
+    const auto groupNear = [&](std::size_t g) { return groups[g].overlaps(query_) && meetsForward(groups[g]); };
+    const auto chunkNear = [&](std::size_t c) { return chunks[c].overlaps(query_) && meetsForward(chunks[c]); };
+    const auto near = [&](std::size_t c) { return (c % G != 0 || groupNear(c / G)) && chunkNear(c); };
     while (next_ < chunks.size()) {
-      if (next_ % G == 0 && !groups[next_ / G].overlaps(query_)) {
+      if (next_ % G == 0 && !groupNear(next_ / G)) {
         next_ += G;
         continue;
       }
-      if (!chunks[next_].overlaps(query_)) {
+      if (!chunkNear(next_)) {
         ++next_;
         continue;
       }
@@ -169,6 +192,11 @@ class NearSampleRuns {
   std::size_t count_ = 0;
   const SampleChunks<D>* chunks_ = nullptr;
   Aabb<D> query_;
+  Mat<D> M_ = Mat<D>::Identity();     ///< owner frame -> boxB's frame (Eq. (7.2))
+  Mat<D> absM_ = Mat<D>::Identity();  ///< |M|, entrywise
+  Vec<D> t_ = Vec<D>::Zero();
+  Aabb<D> boxB_;
+  double scaleB_ = 1.0;  ///< the sizes of t and boxB, for the hair of meetsForward()
   std::size_t next_ = 0;
   std::size_t visited_ = 0;
 };
