@@ -102,7 +102,8 @@ Vec<D> poseDirectionToWorld(const Pose<D>& pose, const Mat<D>& R, const Vec<D>& 
 /// in the run, and so is every sample of a shape of at most four chunks (32 samples; a 2D
 /// box has 16), where testing them all costs less than finding the runs.
 ///
-/// A chunk whose box meets the carried-back box is also carried forward: the box of M c + t
+/// When the bodies are turned relative to each other (some column of |M| sums to more than
+/// 1.05), a chunk whose box meets the carried-back box is also carried forward: the box of M c + t
 /// with half sizes |M| h (c, h the chunk box's centre and half sizes, |M| entrywise) must
 /// meet boxB, grown by the same kind of hair. For every sample s of the chunk,
 /// |M (s - c)| <= |M| h componentwise, so M s + t lies in that box: a chunk that fails
@@ -113,8 +114,8 @@ Vec<D> poseDirectionToWorld(const Pose<D>& pose, const Mat<D>& R, const Vec<D>& 
 template <int D>
 class NearSampleRuns {
  public:
-  NearSampleRuns(const Shape<D>& owner, const Aabb<D>& boxB, const Mat<D>& M, const Vec<D>& t,
-                 bool cullByBounds)
+  [[gnu::always_inline]] NearSampleRuns(const Shape<D>& owner, const Aabb<D>& boxB, const Mat<D>& M,
+                                        const Vec<D>& t, bool cullByBounds)
       : count_(owner.surfaceSamples().size()), chunks_(cullByBounds ? owner.sampleChunks() : nullptr) {
     if (chunks_ != nullptr && !(chunks_->sampleCount() == count_ && chunks_->chunks().size() > 4 &&
                                  carryBack(boxB, M, t))) {
@@ -145,21 +146,43 @@ class NearSampleRuns {
     const double hair =
         1e-9 * (1.0 + half.maxCoeff() + centre.cwiseAbs().maxCoeff() + t.cwiseAbs().maxCoeff());
     query_ = Aabb<D>{Vec<D>(centre.array() - half.array() - hair), Vec<D>(centre.array() + half.array() + hair)};
-    M_ = M;
-    absM_ = M.cwiseAbs();
-    t_ = t;
-    boxB_ = boxB;
-    scaleB_ = 1.0 + t.cwiseAbs().maxCoeff() + boxB.lower.cwiseAbs().maxCoeff() + boxB.upper.cwiseAbs().maxCoeff();
+    // The forward test pays only when the carried-back box is loose: when some column of
+    // |M| sums to more than 1.05, that box is more than 5 % wider than boxB's along that
+    // axis of the owner (a cube's). Aligned bodies, as in a stack, skip it.
+    forward_ = M.cwiseAbs().colwise().sum().maxCoeff() > 1.05;
+    if (forward_) {
+      M_ = M;
+      absM_ = M.cwiseAbs();
+      t_ = t;
+      boxB_ = boxB;
+      scaleB_ = 1.0 + t.cwiseAbs().maxCoeff() + boxB.lower.cwiseAbs().maxCoeff() + boxB.upper.cwiseAbs().maxCoeff();
+    }
     return true;
   }
 
-  /// The carried-forward test: the box of M a + t over a in `a` (owner frame) meets boxB.
-  bool meetsForward(const Aabb<D>& a) const {
-    const Vec<D> centre = M_ * a.center() + t_;
-    const Vec<D> half = absM_ * Vec<D>(0.5 * a.extent());
-    const double hair = 1e-9 * (scaleB_ + half.maxCoeff() + centre.cwiseAbs().maxCoeff());
-    return ((centre - half).array() - hair <= boxB_.upper.array()).all() &&
-           (boxB_.lower.array() <= (centre + half).array() + hair).all();
+  /// A group's or chunk's box `a` (owner frame) may hold a sample that lands in boxB.
+  [[gnu::always_inline]] bool boxNear(const Aabb<D>& a) const { return a.overlaps(query_) && meetsForward(a); }
+
+  /// The carried-forward test: the box of M a + t over a in `a` (owner frame) meets boxB,
+  /// axis by axis; true without a test when forward_ is off.
+  [[gnu::always_inline]] bool meetsForward(const Aabb<D>& a) const {
+    if (!forward_) return true;
+    double c[D], h[D], size = 0.0;
+    for (int j = 0; j < D; ++j) {
+      c[j] = 0.5 * (a.lower[j] + a.upper[j]);
+      h[j] = 0.5 * (a.upper[j] - a.lower[j]);
+      size = std::max(size, std::abs(c[j]) + h[j]);
+    }
+    const double hair = 1e-9 * (scaleB_ + D * size);
+    for (int i = 0; i < D; ++i) {
+      double centre = t_[i], half = hair;
+      for (int j = 0; j < D; ++j) {
+        centre += M_(i, j) * c[j];
+        half += absM_(i, j) * h[j];
+      }
+      if (centre - half > boxB_.upper[i] || centre + half < boxB_.lower[i]) return false;
+    }
+    return true;
   }
 
   [[gnu::noinline]] bool nextRun(std::size_t& first, std::size_t& last) {
@@ -167,20 +190,17 @@ class NearSampleRuns {
     const std::vector<Aabb<D>>& groups = chunks_->groups();
     constexpr std::size_t G = SampleChunks<D>::groupSize;
     constexpr std::size_t C = SampleChunks<D>::chunkSize;
-    const auto groupNear = [&](std::size_t g) { return groups[g].overlaps(query_) && meetsForward(groups[g]); };
-    const auto chunkNear = [&](std::size_t c) { return chunks[c].overlaps(query_) && meetsForward(chunks[c]); };
-    const auto near = [&](std::size_t c) { return (c % G != 0 || groupNear(c / G)) && chunkNear(c); };
     while (next_ < chunks.size()) {
-      if (next_ % G == 0 && !groupNear(next_ / G)) {
+      if (next_ % G == 0 && !boxNear(groups[next_ / G])) {
         next_ += G;
         continue;
       }
-      if (!chunkNear(next_)) {
+      if (!boxNear(chunks[next_])) {
         ++next_;
         continue;
       }
       const std::size_t start = next_++;
-      while (next_ < chunks.size() && near(next_)) ++next_;
+      while (next_ < chunks.size() && (next_ % G != 0 || boxNear(groups[next_ / G])) && boxNear(chunks[next_])) ++next_;
       first = start * C;
       last = std::min(count_, next_ * C);
       visited_ += last - first;
@@ -197,6 +217,7 @@ class NearSampleRuns {
   Vec<D> t_ = Vec<D>::Zero();
   Aabb<D> boxB_;
   double scaleB_ = 1.0;  ///< the sizes of t and boxB, for the hair of meetsForward()
+  bool forward_ = false;  ///< whether meetsForward() tests (the bodies are turned)
   std::size_t next_ = 0;
   std::size_t visited_ = 0;
 };
