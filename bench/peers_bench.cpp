@@ -8,7 +8,7 @@
 // only) timed once formed.
 //
 //   peers_bench [--scenes a,b,...|all] [--seconds T|NAME=T ...] [--reps R|NAME=R ...] [--tiny]
-//               [--csv FILE] [--cache DIR|--no-cache] [--pile-pass] [--list]
+//               [--csv FILE] [--cache DIR|--no-cache] [--pile-pass] [--corners] [--list]
 //
 // Build in Release: cmake --preset release && cmake --build build/release --target peers_bench
 // The full run and its duration on the project's machine: bench/README.md.
@@ -92,7 +92,7 @@ std::vector<Entry> catalogue(bool tiny, const std::string& cache) {
 int usage(const char* program) {
   std::fprintf(stderr,
                "usage: %s [--scenes a,b,...|all] [--seconds T|NAME=T ...] [--reps R|NAME=R ...] [--tiny] [--csv FILE]\n"
-               "          [--cache DIR|--no-cache] [--pile-pass] [--list]\n",
+               "          [--cache DIR|--no-cache] [--pile-pass] [--corners] [--list]\n",
                program);
   return 2;
 }
@@ -129,6 +129,7 @@ int main(int argc, char** argv) {
   bool tiny = false;
   bool list = false;
   bool pilePass = false;
+  bool corners = false;
   std::string csvPath;
   std::string cache = "peers_bench_cache";
   std::vector<std::string> wanted;
@@ -143,6 +144,8 @@ int main(int argc, char** argv) {
       list = true;
     } else if (arg == "--pile-pass") {
       pilePass = true;
+    } else if (arg == "--corners") {
+      corners = true;
     } else if (arg == "--no-cache") {
       cache.clear();
     } else if (arg == "--cache" && hasValue) {
@@ -241,16 +244,22 @@ int main(int argc, char** argv) {
     };
     if (!e.isPile) {
       const BoxScene& s = e.boxes;
-      add("stackbook", false, [s] { return makeStackbookBoxes(s, StackbookConfig::Defaults); });
-      add("stackbook pass", false, [s] { return makeStackbookBoxes(s, StackbookConfig::PassAsContactStage); });
-      add("stackbook short", false, [s] { return makeStackbookBoxes(s, StackbookConfig::ShortLoops); });
+      add("stackbook", false, [s] { return makeStackbookBoxes(s, stackbook::SolverPreset::Gbf); });
+      add("stackbook pass", false, [s] { return makeStackbookBoxes(s, stackbook::SolverPreset::PassAsContact); });
+      add("stackbook short", false, [s] { return makeStackbookBoxes(s, stackbook::SolverPreset::PassAsContactShortLoops); });
+      if (corners) {  // the same preset on boxes sampled at their corners only
+        BoxScene c = s;
+        c.stackbookBoxSubdivisions = 1;
+        add("stackbook short corners", false,
+            [c] { return makeStackbookBoxes(c, stackbook::SolverPreset::PassAsContactShortLoops); });
+      }
       if (s.dimension == 2 && haveBox2d()) add("Box2D", true, [s] { return makeBox2d(s); });
       if (s.dimension == 3 && haveBullet()) add("Bullet", true, [s] { return makeBullet(s); });
     } else {
       const PileSpec& p = e.pile;
-      add("stackbook", false, [p] { return makeStackbookPile(p, StackbookConfig::Defaults); });
-      if (pilePass) add("stackbook pass", false, [p] { return makeStackbookPile(p, StackbookConfig::PassAsContactStage); });
-      if (pilePass) add("stackbook short", false, [p] { return makeStackbookPile(p, StackbookConfig::ShortLoops); });
+      add("stackbook", false, [p] { return makeStackbookPile(p, stackbook::SolverPreset::Gbf); });
+      if (pilePass) add("stackbook pass", false, [p] { return makeStackbookPile(p, stackbook::SolverPreset::PassAsContact); });
+      if (pilePass) add("stackbook short", false, [p] { return makeStackbookPile(p, stackbook::SolverPreset::PassAsContactShortLoops); });
     }
     // Body count and dt without building anything in this process (its memory would be
     // counted in every child's peak).

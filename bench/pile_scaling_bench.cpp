@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
     std::vector<double> allCpu;
     RunResult last;
     for (int r = 0; r < reps; ++r) {
-      RunResult run = runInChild([pile] { return makeStackbookPile(pile, StackbookConfig::Defaults); }, steps);
+      RunResult run = runInChild([pile] { return makeStackbookPile(pile, stackbook::SolverPreset::Gbf); }, steps);
       peak = std::max(peak, run.peakKilobytes);
       if (!run.ok) {
         last = run;

@@ -22,7 +22,7 @@ struct PileSpec {
   double settleSpeed = 0.05;
   std::string cacheDir;
 };
-std::unique_ptr<Engine> makeStackbookPile(const PileSpec& pile, StackbookConfig config);
+std::unique_ptr<Engine> makeStackbookPile(const PileSpec& pile, stackbook::SolverPreset preset);
 
 /// The folder of the bundled scenes.
 std::string scenesDir();

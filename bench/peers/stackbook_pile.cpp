@@ -38,11 +38,11 @@ std::string cachePath(const PileSpec& pile) {
 template <int D>
 class StackbookPile final : public Engine {
  public:
-  StackbookPile(const PileSpec& pile, StackbookConfig config) {
+  StackbookPile(const PileSpec& pile, stackbook::SolverPreset preset) {
     const Scene scene = loadScene(pile.file, pile.overrides);
     world_ = std::get<SceneBodies<D>>(scene.bodies).world;
     const StepSettings formSettings = scene.settings;
-    settings_ = stackbookSettings(config, scene.settings);
+    settings_ = stackbook::applySolverPreset(preset, scene.settings);
     halfDiagonal_.resize(world_.bodies.size());
     for (std::size_t i = 0; i < world_.bodies.size(); ++i) {
       const Aabb<D> box = world_.shapes[i]->bounds();
@@ -50,7 +50,7 @@ class StackbookPile final : public Engine {
     }
     const std::string cache = cachePath(pile);
     if (cache.empty() || !load(cache)) {
-      // Form the pile with the scene's own settings (one formed state for every configuration).
+      // Form the pile with the scene's own settings (one formed state for every preset).
       const auto steps = static_cast<long>(std::ceil(pile.formSeconds / formSettings.dt - 1e-9));
       const PostContactHook<D> hook = shockPropagationHook<D>();
       for (long n = 1; n <= steps; ++n) {
@@ -162,10 +162,10 @@ class StackbookPile final : public Engine {
 
 }  // namespace
 
-std::unique_ptr<Engine> makeStackbookPile(const PileSpec& pile, StackbookConfig config) {
+std::unique_ptr<Engine> makeStackbookPile(const PileSpec& pile, stackbook::SolverPreset preset) {
   const nlohmann::json doc = readSceneJson(pile.file);
-  if (doc.value("dimension", 2) == 2) return std::make_unique<StackbookPile<2>>(pile, config);
-  return std::make_unique<StackbookPile<3>>(pile, config);
+  if (doc.value("dimension", 2) == 2) return std::make_unique<StackbookPile<2>>(pile, preset);
+  return std::make_unique<StackbookPile<3>>(pile, preset);
 }
 
 

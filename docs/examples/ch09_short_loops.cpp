@@ -1,8 +1,8 @@
 // Chapter 9, "Short pair loops": the claims that chapter 9's tests make of the pass as the
 // contact stage, measured under four pair-loop settings: PhysBAM's caps (10 in the pass, 20
 // in the collision stage; passAsContactStage()), caps of 2 (passAsContactStage(base, 20,
-// 2)), caps of 4 and of 5 (passAsContactStageShortLoops()) with the visit ended after an
-// impulse of at most 0.2 times its first. Prints one Markdown row per claim with the test's
+// 2)), caps of 4 and of 5 (passAsContactStageShortLoops(base, 20, 4) and its defaults) with
+// the visit ended after an impulse of at most 0.2 times its first. Prints one Markdown row per claim with the test's
 // bound; a value that misses its bound is in bold. Unit boxes of mass 1, dt = 1e-3.
 #include <algorithm>
 #include <cmath>
@@ -21,12 +21,7 @@ StepSettings settingsAt(int k) {
   switch (k) {
     case 0: return passAsContactStage();
     case 1: return passAsContactStage(StepSettings{}, 20, 2);
-    case 2: {
-      StepSettings s = passAsContactStageShortLoops();
-      s.shock.pairIterations = 4;
-      s.collisionPairIterations = 4;
-      return s;
-    }
+    case 2: return passAsContactStageShortLoops(StepSettings{}, 20, 4);
     default: return passAsContactStageShortLoops();
   }
 }

@@ -6,11 +6,13 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include "../ch08/scene_builders.hpp"
 #include "../support/dimensions.hpp"
 #include "stack_scenes.hpp"
+#include "stackbook/stacking/solver_preset.hpp"
 
 using namespace stackbook;
 using stackbook::testing::In2D;
@@ -23,9 +25,7 @@ StepSettings passOnly(int sweepsPerLevel = 20) { return passAsContactStage(StepS
 
 /// The short pair loops (passAsContactStageShortLoops()) with `sweepsPerLevel` sweeps per level.
 StepSettings shortLoops(int sweepsPerLevel = 20) {
-  StepSettings s = passAsContactStageShortLoops();
-  s.shock.sweepsPerLevel = sweepsPerLevel;  // the ramp follows: the preset leaves it empty
-  return s;
+  return passAsContactStageShortLoops(StepSettings{}, sweepsPerLevel);  // the ramp follows: it is left empty
 }
 
 /// Run `steps` steps of stackingStep (with whatever effects the settings leave inferred).
@@ -156,6 +156,55 @@ TEST_CASE("the short pair loops are the pass as the contact stage with caps of 5
   base.dt = 1.0 / 60.0;
   CHECK(passAsContactStageShortLoops(base).dt == base.dt);  // the rest of base is kept
   CHECK_NOTHROW(validateStepSettings(s));
+}
+
+TEST_CASE("the short pair loops take their sweeps, cap and tolerance as parameters") {
+  const StepSettings s = passAsContactStageShortLoops(StepSettings{}, 12, 4, 0.1);
+  CHECK(s.shock.replacesContactStage);
+  CHECK(s.shock.sweepsPerLevel == 12);
+  CHECK(s.shock.restitution.empty());  // GBF's ramp over the 12 sweeps
+  CHECK(s.shock.pairIterations == 4);
+  CHECK(s.collisionPairIterations == 4);
+  CHECK(s.shock.pairImpulseTolerance == 0.1);
+  CHECK(s.pairImpulseTolerance == 0.1);
+  CHECK_NOTHROW(validateStepSettings(s));
+  // A cap below one impulse, or a tolerance outside [0, 1], is not a short loop: refused.
+  CHECK_THROWS_AS(passAsContactStageShortLoops(StepSettings{}, 20, 0), std::invalid_argument);
+  CHECK_THROWS_AS(passAsContactStageShortLoops(StepSettings{}, 20, 5, -0.1), std::invalid_argument);
+  CHECK_THROWS_AS(passAsContactStageShortLoops(StepSettings{}, 20, 5, 1.5), std::invalid_argument);
+  CHECK_THROWS_AS(passAsContactStageShortLoops(StepSettings{}, 20, 5, std::nan("")), std::invalid_argument);
+}
+
+TEST_CASE("each solver preset is the settings function it names, and its word names it back") {
+  StepSettings base;
+  base.dt = 1.0 / 60.0;
+  base.parallel.threads = 3;
+  const StepSettings gbf = applySolverPreset(SolverPreset::Gbf, base);
+  CHECK_FALSE(gbf.shock.replacesContactStage);
+  CHECK(gbf.contactIterations == base.contactIterations);
+  CHECK(gbf.frictionCone == base.frictionCone);
+  const StepSettings pass = applySolverPreset(SolverPreset::PassAsContact, base);
+  const StepSettings passByHand = passAsContactStage(base);
+  CHECK(pass.shock.replacesContactStage);
+  CHECK(pass.shock.sweepsPerLevel == passByHand.shock.sweepsPerLevel);
+  CHECK(pass.shock.pairIterations == passByHand.shock.pairIterations);
+  CHECK(pass.frictionCone == FrictionConeRule::StepTotal);
+  const StepSettings loops = applySolverPreset(SolverPreset::PassAsContactShortLoops, base);
+  CHECK(loops.shock.pairIterations == 5);
+  CHECK(loops.collisionPairIterations == 5);
+  CHECK(loops.pairImpulseTolerance == 0.2);
+  for (const StepSettings* s : {&gbf, &pass, &loops}) {  // base's other fields are kept
+    CHECK(s->dt == base.dt);
+    CHECK(s->parallel.threads == 3);
+  }
+  for (const auto& [preset, word] : kSolverPresets) {
+    REQUIRE(solverPresetNamed(word).has_value());
+    CHECK(*solverPresetNamed(word) == preset);
+    CHECK(solverPresetName(preset) == word);
+  }
+  CHECK_FALSE(solverPresetNamed("GBF").has_value());  // the words are case-sensitive
+  CHECK_FALSE(solverPresetNamed("").has_value());
+  CHECK(solverPresetWords() == "\"gbf\", \"passAsContact\" or \"passAsContactShortLoops\"");
 }
 
 }  // TEST_SUITE

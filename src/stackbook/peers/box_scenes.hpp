@@ -49,6 +49,10 @@ struct BoxScene {
   int positionIterations = 3;
   /// Bullet's knob: sequential-impulse iterations per step (its default).
   int solverIterations = 10;
+  /// stackbook's knob: the pieces each box edge is cut into for its surface samples
+  /// (SampleMeshSettings::boxSubdivisions, a scene's "samples"): 4, the default, gives a 2D box
+  /// 16 samples and a cube 98; 1 leaves the corners only (4 and 8).
+  int stackbookBoxSubdivisions = 4;
   std::vector<BoxSpec> boxes;  ///< boxes[0] is the ground
   /// The index of the top box (the one whose sag is reported).
   int top() const;

@@ -10,6 +10,7 @@
 
 #include "stackbook/peers/box_scenes.hpp"
 #include "stackbook/peers/measures.hpp"
+#include "stackbook/stacking/solver_preset.hpp"
 
 namespace stackbook {
 struct StepCounters;
@@ -63,17 +64,9 @@ class BoxEngine : public Engine {
   long steps_ = 0;  ///< steps since timing started (each adapter's step() counts them)
 };
 
-/// The three stackbook configurations of the table.
-enum class StackbookConfig {
-  Defaults,            ///< StepSettings{} with shock propagation (stackingStep)
-  PassAsContactStage,  ///< passAsContactStage(): 20 sweeps per level, one cone per step
-  ShortLoops           ///< passAsContactStageShortLoops(): that with pair loops of 5, ended at 0.2
-};
-
-/// The settings of a configuration, from `base` (its dt and threads are kept).
-stackbook::StepSettings stackbookSettings(StackbookConfig config, const stackbook::StepSettings& base);
-
-std::unique_ptr<Engine> makeStackbookBoxes(const BoxScene& scene, StackbookConfig config);
+/// stackbook under one of the solver presets (a column of the table; chapter 9's
+/// applySolverPreset(), the table a scene's "solver": {"preset": ...} reads too).
+std::unique_ptr<Engine> makeStackbookBoxes(const BoxScene& scene, stackbook::SolverPreset preset);
 
 /// The peers; null when the library was not found at configure time.
 std::unique_ptr<BoxEngine> makeBox2d(const BoxScene& scene);

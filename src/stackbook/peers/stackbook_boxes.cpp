@@ -4,7 +4,7 @@
 
 #include "stackbook/peers/engine.hpp"
 #include "stackbook/geometry/analytic_sdf.hpp"
-#include "stackbook/stacking/shock_propagation.hpp"
+#include "stackbook/stacking/solver_preset.hpp"
 
 namespace peers {
 
@@ -28,8 +28,8 @@ using namespace stackbook;
 template <int D>
 class StackbookBoxes final : public BoxEngine {
  public:
-  StackbookBoxes(const BoxScene& scene, StackbookConfig config) : BoxEngine(scene) {
-    settings_ = stackbookSettings(config, StepSettings{});
+  StackbookBoxes(const BoxScene& scene, SolverPreset preset) : BoxEngine(scene) {
+    settings_ = applySolverPreset(preset, StepSettings{});
     settings_.dt = scene.dt;
     world_.gravity = scene.gravityVector().head<D>();
     const Material material{scene.restitution, scene.friction, 0.0};  // pairs take the smaller mu: Eq. (8.4)
@@ -108,7 +108,9 @@ class StackbookBoxes final : public BoxEngine {
     for (const auto& [s, shape] : shapes_) {
       if (s == size) return shape;
     }
-    shapes_.emplace_back(size, std::make_shared<BoxShape<D>>(makeBoxShape<D>(size)));
+    SampleMeshSettings mesh;
+    mesh.boxSubdivisions = scene_.stackbookBoxSubdivisions;
+    shapes_.emplace_back(size, std::make_shared<BoxShape<D>>(makeBoxShape<D>(size, mesh)));
     return shapes_.back().second;
   }
 
@@ -120,18 +122,9 @@ class StackbookBoxes final : public BoxEngine {
 
 }  // namespace
 
-StepSettings stackbookSettings(StackbookConfig config, const StepSettings& base) {
-  switch (config) {
-    case StackbookConfig::PassAsContactStage: return passAsContactStage(base);
-    case StackbookConfig::ShortLoops: return passAsContactStageShortLoops(base);
-    case StackbookConfig::Defaults: break;
-  }
-  return base;
-}
-
-std::unique_ptr<Engine> makeStackbookBoxes(const BoxScene& scene, StackbookConfig config) {
-  if (scene.dimension == 2) return std::make_unique<StackbookBoxes<2>>(scene, config);
-  return std::make_unique<StackbookBoxes<3>>(scene, config);
+std::unique_ptr<Engine> makeStackbookBoxes(const BoxScene& scene, SolverPreset preset) {
+  if (scene.dimension == 2) return std::make_unique<StackbookBoxes<2>>(scene, preset);
+  return std::make_unique<StackbookBoxes<3>>(scene, preset);
 }
 
 }  // namespace peers

@@ -8,7 +8,7 @@
 
 #include "stackbook/scene/scene.hpp"
 #include "stackbook/scene/scene_reader.hpp"
-#include "stackbook/stacking/shock_propagation.hpp"
+#include "stackbook/stacking/solver_preset.hpp"
 
 namespace stackbook {
 
@@ -130,13 +130,9 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
   if (const json* v = member(solver, "preset")) {
     const std::string ptr = p + "/preset";
     const std::string word = r.string(*v, ptr);
-    if (word == "passAsContact") {
-      s = passAsContactStage(s);
-    } else if (word == "passAsContactShortLoops") {
-      s = passAsContactStageShortLoops(s);
-    } else if (word != "gbf") {
-      r.fail(ptr, "must be \"gbf\", \"passAsContact\" or \"passAsContactShortLoops\", got \"" + word + "\"");
-    }
+    const std::optional<SolverPreset> preset = solverPresetNamed(word);
+    if (!preset) r.fail(ptr, "must be " + solverPresetWords() + ", got \"" + word + "\"");
+    s = applySolverPreset(*preset, s);
   }
   // Threads (chapter 10): 0 is every hardware thread; any count gives the same result.
   if (const json* v = member(solver, "threads")) s.parallel.threads = r.integer(*v, p + "/threads", 0, 1024);

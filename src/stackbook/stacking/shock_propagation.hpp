@@ -371,19 +371,22 @@ inline StepSettings passAsContactStage(StepSettings base = {}, int sweepsPerLeve
 
 // [pass_short_loops_settings]
 /// The pass as the contact stage with short pair loops (chapter 9, "Short pair loops"):
-/// passAsContactStage() with 20 sweeps per level and one cone per step, and in the pass
-/// and in the collision stage at most 5 impulses per pair visit, the visit ending early
-/// after an impulse |j| <= 0.2 times its first (shock.pairImpulseTolerance for the pass,
-/// pairImpulseTolerance for the collision stage; the contact stage, which would read
-/// it too, does not run). Caps of 2 leave a stack at dt = 1e-3 short of rest; caps of 5
-/// with the tolerance keep every claim of PhysBAM's caps that chapter 9 tests.
-inline StepSettings passAsContactStageShortLoops(StepSettings base = {}) {
-  constexpr int kSweepsPerLevel = 20;
-  constexpr int kPairCap = 5;
-  constexpr double kPairImpulseTolerance = 0.2;
-  base = passAsContactStage(base, kSweepsPerLevel, kPairCap);
-  base.shock.pairImpulseTolerance = kPairImpulseTolerance;
-  base.pairImpulseTolerance = kPairImpulseTolerance;
+/// passAsContactStage() with `sweepsPerLevel` sweeps per level and one cone per step, and in
+/// the pass and in the collision stage at most `pairCap` impulses per pair visit, the visit
+/// ending early after an impulse |j| <= `pairImpulseTolerance` times its first
+/// (shock.pairImpulseTolerance for the pass, pairImpulseTolerance for the collision stage;
+/// the contact stage, which would read it too, does not run). The defaults, 20, 5 and 0.2,
+/// are the preset of the bundled pyramids: caps of 2 leave a stack at dt = 1e-3 short of
+/// rest; caps of 5 with the tolerance keep every claim of PhysBAM's caps that chapter 9 tests.
+inline StepSettings passAsContactStageShortLoops(StepSettings base = {}, int sweepsPerLevel = 20,
+                                                 int pairCap = 5, double pairImpulseTolerance = 0.2) {
+  if (pairCap < 1) throw std::invalid_argument("passAsContactStageShortLoops: pairCap must be at least 1");
+  if (!(pairImpulseTolerance >= 0.0 && pairImpulseTolerance <= 1.0)) {
+    throw std::invalid_argument("passAsContactStageShortLoops: pairImpulseTolerance must be in [0, 1]");
+  }
+  base = passAsContactStage(base, sweepsPerLevel, pairCap);
+  base.shock.pairImpulseTolerance = pairImpulseTolerance;
+  base.pairImpulseTolerance = pairImpulseTolerance;
   return base;
 }
 // [pass_short_loops_settings]
