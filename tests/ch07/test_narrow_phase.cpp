@@ -10,6 +10,7 @@
 #include "stackbook/collision/narrow_phase.hpp"
 #include "support/dimensions.hpp"
 #include "support/eigen_checks.hpp"
+#include "support/random_bodies.hpp"
 #include "support/tilt.hpp"
 #include "test_shapes.hpp"
 
@@ -17,6 +18,7 @@ using namespace stackbook;
 using stackbook::testing::boxShape;
 using stackbook::testing::In2D;
 using stackbook::testing::In3D;
+using stackbook::testing::RandomSource;
 using stackbook::testing::tilt;
 
 namespace {
@@ -366,6 +368,53 @@ TEST_CASE_TEMPLATE("the counters count the work of detecting a box on the ground
   CHECK(total == DetectionCounters{});
 }
 // [test_counters]
+
+TEST_CASE_TEMPLATE("skipping far runs of samples finds the samples the plain loop finds, bit for bit, for turned "
+                   "bodies", Dim, In2D, In3D) {
+  // Two densely sampled boxes (a lattice of samples on every face: more than four runs, so
+  // the runs are used) at random turned poses that overlap: with and without culling, the
+  // same samples in the same order with the same bits, and culling transforms fewer.
+  constexpr int D = Dim::value;
+  const BoxShape<D> a = boxShape<D>(Vec<D>(flatHalfExtents<D>(1.0, 0.25)), 12);
+  const BoxShape<D> b = boxShape<D>(Vec<D>::Constant(0.5), 12);
+  REQUIRE(a.surfaceSamples().size() > 32);
+  RandomSource rng(707);
+  DetectionSettings noCull;
+  noCull.narrow.cullByBounds = false;
+  std::int64_t culledByRuns = 0;
+  int overlapping = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    RigidBody<D> bodyA = makeDynamicBody<D>(1.0, AngVec<D>::Constant(1.0));
+    RigidBody<D> bodyB = makeDynamicBody<D>(1.0, AngVec<D>::Constant(1.0));
+    bodyA.position = rng.vector<D>(-0.2, 0.2);
+    bodyA.orientation = rng.orientation<D>();
+    bodyB.position = rng.vector<D>(-1.2, 1.2);
+    bodyB.orientation = rng.orientation<D>();
+    const std::vector<CollisionBody<D>> bodies{collisionBody<D>(bodyA, a), collisionBody<D>(bodyB, b)};
+    DetectionCounters culled, plain;
+    const std::vector<PairInterference<D>> withRuns = detectInterference<D>(bodies, {}, &culled);
+    const std::vector<PairInterference<D>> without = detectInterference<D>(bodies, noCull, &plain);
+    REQUIRE(withRuns.size() == without.size());
+    for (std::size_t p = 0; p < withRuns.size(); ++p) {
+      ++overlapping;
+      const auto& x = withRuns[p].samples;
+      const auto& y = without[p].samples;
+      REQUIRE(x.size() == y.size());
+      for (std::size_t k = 0; k < x.size(); ++k) {
+        CHECK(x[k].sampleIndex == y[k].sampleIndex);
+        CHECK(x[k].owner == y[k].owner);
+        CHECK(x[k].depth == y[k].depth);  // the same operations: the same bits
+        CHECK(x[k].point == y[k].point);
+        CHECK(x[k].normal == y[k].normal);
+      }
+    }
+    CHECK(culled.interferenceSamples == plain.interferenceSamples);
+    CHECK(culled.samplesTransformed == plain.samplesTransformed);  // a skipped sample counts as culled
+    culledByRuns += culled.samplesCulled;
+  }
+  CHECK(overlapping > 50);     // most trials overlap, so the comparison is not empty
+  CHECK(culledByRuns > 0);
+}
 
 TEST_CASE_TEMPLATE("the narrow phase rejects missing shapes bad margins bad poses and bad pairs", Dim,
                    In2D, In3D) {

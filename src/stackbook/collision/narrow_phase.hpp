@@ -154,7 +154,8 @@ class NearSampleRuns {
       M_ = M;
       absM_ = M.cwiseAbs();
       t_ = t;
-      boxB_ = boxB;
+      lowerB_ = boxB.lower;
+      upperB_ = boxB.upper;
       scaleB_ = 1.0 + t.cwiseAbs().maxCoeff() + boxB.lower.cwiseAbs().maxCoeff() + boxB.upper.cwiseAbs().maxCoeff();
     }
     return true;
@@ -180,7 +181,7 @@ class NearSampleRuns {
         centre += M_(i, j) * c[j];
         half += absM_(i, j) * h[j];
       }
-      if (centre - half > boxB_.upper[i] || centre + half < boxB_.lower[i]) return false;
+      if (centre - half > upperB_[i] || centre + half < lowerB_[i]) return false;
     }
     return true;
   }
@@ -212,10 +213,12 @@ class NearSampleRuns {
   std::size_t count_ = 0;
   const SampleChunks<D>* chunks_ = nullptr;
   Aabb<D> query_;
-  Mat<D> M_ = Mat<D>::Identity();     ///< owner frame -> boxB's frame (Eq. (7.2))
-  Mat<D> absM_ = Mat<D>::Identity();  ///< |M|, entrywise
-  Vec<D> t_ = Vec<D>::Zero();
-  Aabb<D> boxB_;
+  // Set by carryBack() only when forward_ is on, and read only then: a query of aligned
+  // bodies (most of a stack's) does not pay to fill them.
+  Mat<D> M_;     ///< owner frame -> boxB's frame (Eq. (7.2))
+  Mat<D> absM_;  ///< |M|, entrywise
+  Vec<D> t_;
+  Vec<D> lowerB_, upperB_;  ///< boxB
   double scaleB_ = 1.0;  ///< the sizes of t and boxB, for the hair of meetsForward()
   bool forward_ = false;  ///< whether meetsForward() tests (the bodies are turned)
   std::size_t next_ = 0;
