@@ -2,7 +2,8 @@
 // one b2World with the scene's gravity, a static ground box, dynamic boxes of the scene's
 // size and mass (density = mass / area), stepped with the scene's velocity and position
 // iterations (Box2D's testbed defaults: 8 and 3). Box2D mixes friction as sqrt(mu_a mu_b), so every fixture gets
-// the scene's mu. Sleeping is off, as stackbook has none (and as Box2D's own benchmarks run).
+// the scene's mu. Sleeping is off, as it is in stackbook's columns (and as Box2D's own benchmarks run),
+// so that every engine does every step's work.
 #include "stackbook/peers/engine.hpp"
 
 #ifdef STACKBOOK_HAVE_BOX2D

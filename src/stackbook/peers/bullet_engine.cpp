@@ -4,7 +4,7 @@
 // its defaults (split impulse; the scene's iteration count, 10 by default), gravity down z, a static ground box and
 // dynamic boxes of the scene's size and mass. stepSimulation(dt, 0) takes exactly one step
 // of dt. Bullet mixes friction as mu_a mu_b, so each body gets sqrt(mu) to make the pair's
-// mu the scene's. Deactivation (sleeping) is off, as stackbook has none.
+// mu the scene's. Deactivation (sleeping) is off, as it is in stackbook's columns.
 #include "stackbook/peers/engine.hpp"
 
 #ifdef STACKBOOK_HAVE_BULLET
