@@ -381,8 +381,9 @@ inline StepSettings passAsContactStage(StepSettings base = {}, int sweepsPerLeve
 inline StepSettings passAsContactStageShortLoops(StepSettings base = {}, int sweepsPerLevel = 20,
                                                  int pairCap = 5, double pairImpulseTolerance = 0.2) {
   if (pairCap < 1) throw std::invalid_argument("passAsContactStageShortLoops: pairCap must be at least 1");
-  if (!(pairImpulseTolerance >= 0.0 && pairImpulseTolerance <= 1.0)) {
-    throw std::invalid_argument("passAsContactStageShortLoops: pairImpulseTolerance must be in [0, 1]");
+  // The range validateStepSettings() requires of both tolerances.
+  if (!(pairImpulseTolerance >= 0.0 && pairImpulseTolerance < 1.0)) {
+    throw std::invalid_argument("passAsContactStageShortLoops: pairImpulseTolerance must be in [0, 1)");
   }
   base = passAsContactStage(base, sweepsPerLevel, pairCap);
   base.shock.pairImpulseTolerance = pairImpulseTolerance;
