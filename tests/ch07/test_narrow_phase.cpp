@@ -416,7 +416,7 @@ TEST_CASE_TEMPLATE("skipping far runs of samples finds the samples the plain loo
   CHECK(culledByRuns > 0);
 }
 
-TEST_CASE_TEMPLATE("equal boxes sampled at their corners only miss a square stack's contact; two pieces per edge "
+TEST_CASE_TEMPLATE("equal boxes sampled at their corners only miss a square stack's contact, two pieces per edge "
                    "find it", Dim, In2D, In3D) {
   // A unit box sunk 0.01 into an equal box below it, squarely: each corner of either box lies
   // on a side face of the other, where phi = 0 is not inside (Eq. (7.1)), so corner samples
