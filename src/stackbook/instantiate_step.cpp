@@ -14,12 +14,13 @@ namespace stackbook {
 #define STACKBOOK_INSTANTIATE_STEP(D)                                                          \
   template int resolvePair<D>(World<D>&, std::vector<CollisionBody<D>>&, const BodyPair&,      \
                               const StageSpec&, int, double, const StepSettings&,              \
-                              StageCounters&);                                                 \
+                              StageCounters&, PairCandidateLists<D>*);                         \
   template std::vector<CollisionBody<D>> stageViews<D>(const World<D>&, Lookahead, double,     \
                                                        RotationUpdate, const ParallelSettings&); \
   template int sweepPairs<D>(World<D>&, std::vector<CollisionBody<D>>&,                        \
                              const std::vector<BodyPair>&, const StageSpec&, int, double,      \
-                             const StepSettings&, StageCounters&);                             \
+                             const StepSettings&, StageCounters&,                              \
+                             std::vector<PairCandidateLists<D>>*);                             \
   template void runImpulseStage<D>(World<D>&, const StageSpec&, double, const StepSettings&,   \
                                    StageCounters&);                                            \
   template StepCounters gbfStep<D>(World<D>&, const StepSettings&, const PostContactHook<D>&); \

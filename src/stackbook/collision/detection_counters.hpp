@@ -21,6 +21,8 @@ struct DetectionCounters {
   std::int64_t samplesCulled = 0;       ///< of those, rejected by the other body's box
   std::int64_t phiQueries = 0;          ///< signed-distance evaluations
   std::int64_t interferenceSamples = 0; ///< samples found inside the other body (phi < 0)
+  std::int64_t candidateListsMade = 0;  ///< narrow phase: candidate lists made or remade (chapter 7)
+  std::int64_t listedQueries = 0;       ///< narrow phase: directions answered from a candidate list
 
   /// Set every count back to zero.
   void reset() { *this = DetectionCounters{}; }
@@ -34,6 +36,8 @@ struct DetectionCounters {
     samplesCulled += o.samplesCulled;
     phiQueries += o.phiQueries;
     interferenceSamples += o.interferenceSamples;
+    candidateListsMade += o.candidateListsMade;
+    listedQueries += o.listedQueries;
     return *this;
   }
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "stackbook/collision/broad_phase.hpp"
+#include "stackbook/collision/candidate_lists.hpp"
 #include "stackbook/collision/collision_body.hpp"
 #include "stackbook/collision/detection_counters.hpp"
 #include "stackbook/geometry/sample_chunks.hpp"
@@ -309,6 +310,14 @@ struct NarrowPhaseSettings {
   /// also the exact deepest point of every shape that has the query (Shape::deepestPoint,
   /// the convex analytic primitives), which replaces the samples of a sphere or disk.
   SurfaceQuery surfaceQuery = SurfaceQuery::Samples;
+  /// Candidate lists (chapter 7, "Candidate lists", Eq. (7.10)): the impulse loops keep, for
+  /// each pair and direction, the samples that can still be inside while every sample has
+  /// moved at most this fraction of the owner's sample radius, and ask only those until the
+  /// bodies move farther (>= 0; 0: no lists, every ask runs the loop over all samples).
+  /// Exact for any value: the samples found, their order and their bits are those of the
+  /// full loop. It needs a Lipschitz bound of the penetrated body's phi
+  /// (Shape::distanceLipschitz()); against a shape without one the full loop runs.
+  double candidateReach = 0.05;
 };
 
 namespace detail {
@@ -491,24 +500,128 @@ struct InterferenceCandidate {
 
 namespace detail {
 
+// [candidate_list_make]
+/// Makes `list` for the pose (M, t) while doing the direction's ordinary work: every sample
+/// of the runs that may reach boxB grown by the reach (NearSampleRuns) is carried into the
+/// penetrated frame; one that lands in the grown box (or any, without culling) gets phi, and
+/// is listed when phi < L (reach + hair) (Eq. (7.10)); inside(k, xB, phi) receives, in sample
+/// order, exactly the samples the full loop (forEachSampleInside()) would report.
+template <int D, class Inside>
+void makeCandidateList(CandidateList<D>& list, const Shape<D>& owner, const std::vector<Vec<D>>& samples,
+                       double radius, const Shape<D>& shapeB, double lipschitz, int penetratedIndex,
+                       const Aabb<D>& boxB, const Mat<D>& M, const Vec<D>& t,
+                       const NarrowPhaseSettings& settings, SampleWork& work, Inside&& inside) {
+  list.made = true;
+  list.M = M;
+  list.t = t;
+  list.reach = settings.candidateReach * radius;
+  list.hair = 1e-9 * (1.0 + radius + t.norm() + boxB.lower.norm() + boxB.upper.norm());
+  list.samples.clear();
+  const double keepBelow = lipschitz * (list.reach + list.hair);
+  const Aabb<D> wide = boxB.inflated(list.reach + list.hair);
+  const bool cull = settings.cullByBounds;
+  std::int64_t culled = 0, queries = 0, found = 0;
+  NearSampleRuns<D> runs(owner, wide, M, t, cull);
+  for (std::size_t first = 0, last = 0; runs.next(first, last);) {
+    for (std::size_t k = first; k < last; ++k) {
+      const Vec<D> xB = M * samples[k] + t;  // Eq. (7.2)
+      if (cull && !wide.contains(xB)) {
+        ++culled;
+        continue;
+      }
+      const bool asked = !cull || boxB.contains(xB);  // what the full loop asks (Eq. (7.7))
+      const double phi = shapeB.signedDistance(xB);
+      if (std::isnan(phi)) {
+        if (asked) throwNanDistance<D>(shapeB, xB, penetratedIndex);
+        list.samples.push_back(static_cast<int>(k));  // unknown: keep it, the full loop will ask
+        continue;
+      }
+      if (phi < keepBelow) list.samples.push_back(static_cast<int>(k));
+      if (!asked) {
+        ++culled;
+        continue;
+      }
+      ++queries;
+      if (!(phi < 0.0)) continue;  // Eq. (7.1)
+      ++found;
+      inside(k, xB, phi);
+    }
+  }
+  work.culled += culled + static_cast<std::int64_t>(runs.skipped());
+  work.queries += queries;
+  work.found += found;
+}
+// [candidate_list_make]
+
+// [candidate_list_ask]
+/// The direction's loop over the listed samples only: the same test and the same values,
+/// sample for sample, as forEachSampleInside() gives them.
+template <int D, class Inside>
+void forEachListedSampleInside(const CandidateList<D>& list, const std::vector<Vec<D>>& samples,
+                               const Shape<D>& shapeB, int penetratedIndex, const Aabb<D>& boxB,
+                               const Mat<D>& M, const Vec<D>& t, bool cullByBounds, SampleWork& work,
+                               Inside&& inside) {
+  std::int64_t culled = 0, queries = 0, found = 0;
+  for (const int index : list.samples) {
+    const std::size_t k = static_cast<std::size_t>(index);
+    const Vec<D> xB = M * samples[k] + t;  // Eq. (7.2)
+    if (cullByBounds && !boxB.contains(xB)) {  // Eq. (7.7)
+      ++culled;
+      continue;
+    }
+    ++queries;
+    const double phi = shapeB.signedDistance(xB);
+    if (std::isnan(phi)) throwNanDistance<D>(shapeB, xB, penetratedIndex);
+    if (!(phi < 0.0)) continue;  // Eq. (7.1)
+    ++found;
+    inside(k, xB, phi);
+  }
+  work.culled += culled;
+  work.queries += queries;
+  work.found += found;
+}
+// [candidate_list_ask]
+
 /// Appends the candidates of one direction, counting the same work as appendSamplesInside()
-/// and with the same phi queries in the same order.
+/// and with the same phi queries in the same order. With `list` (and candidate lists on, and
+/// a Lipschitz bound for the penetrated shape, and sample chunks for the owner), the samples
+/// come from the list while it covers the pose, and the list is remade when it does not.
 template <int D>
 void appendCandidatesInside(const CollisionBody<D>& owner, const Mat<D>& RA, const CollisionBody<D>& penetrated,
                             const Mat<D>& RB, int penetratedIndex, bool firstOwns,
                             std::vector<InterferenceCandidate<D>>& out,
-                            const NarrowPhaseSettings& settings, DetectionCounters* counters) {
+                            const NarrowPhaseSettings& settings, DetectionCounters* counters,
+                            CandidateList<D>* list = nullptr) {
   const Shape<D>& shapeB = *penetrated.shape;
   const Aabb<D> boxB = shapeB.bounds().inflated(settings.cullMargin);
   const Mat<D> M = RB.transpose() * RA;
   const Vec<D> t = RB.transpose() * Vec<D>(owner.pose.position - penetrated.pose.position);
   const std::vector<Vec<D>>& samples = owner.shape->surfaceSamples();
   SampleWork work;
+  const auto record = [&](std::size_t k, const Vec<D>& xB, double phi) {
+    out.push_back(InterferenceCandidate<D>{xB, phi, static_cast<int>(out.size()), static_cast<int>(k), firstOwns});
+  };
+  // [candidate_list_use]
+  const SampleChunks<D>* chunks = owner.shape->sampleChunks();
+  const double lipschitz = shapeB.distanceLipschitz();
+  if (list != nullptr && settings.candidateReach > 0.0 && lipschitz > 0.0 && chunks != nullptr &&
+      chunks->sampleCount() == samples.size()) {
+    if (list->covers(M, t, chunks->radius())) {
+      forEachListedSampleInside<D>(*list, samples, shapeB, penetratedIndex, boxB, M, t, settings.cullByBounds,
+                                   work, record);
+      addSampleWork(counters, list->samples.size(), work);
+      if (counters != nullptr) ++counters->listedQueries;
+    } else {
+      makeCandidateList<D>(*list, *owner.shape, samples, chunks->radius(), shapeB, lipschitz, penetratedIndex, boxB,
+                           M, t, settings, work, record);
+      addSampleWork(counters, samples.size(), work);
+      if (counters != nullptr) ++counters->candidateListsMade;
+    }
+    return;
+  }
+  // [candidate_list_use]
   forEachSampleInside<D>(*owner.shape, samples, shapeB, penetratedIndex, boxB, M, t, settings.cullByBounds, work,
-                         [&](std::size_t k, const Vec<D>& xB, double phi) {
-                           out.push_back(InterferenceCandidate<D>{xB, phi, static_cast<int>(out.size()),
-                                                                  static_cast<int>(k), firstOwns});
-                         });
+                         record);
   addSampleWork(counters, samples.size(), work);
 }
 
@@ -522,11 +635,15 @@ void appendCandidatesInside(const CollisionBody<D>& owner, const Mat<D>& RA, con
 /// one, and among equally deep ones the first in sample order, exactly as Eq. (7.6) and
 /// its tie rule pick it, with the same bits: each value is computed by the same operations.
 /// `scratch` holds the candidates (reused across calls, so no allocation once it has grown).
+/// `lists`, when given, are the pair's candidate lists (Eq. (7.10)): they are used while
+/// they cover the bodies' relative pose and remade when they do not, with the same result
+/// bit for bit; the caller keeps them from one ask of the pair to the next.
 /// The bodies must have shapes and finite poses (the caller checks them once). \ref ch07
 template <int D>
 std::optional<InterferenceSample<D>> deepestApproachingInPair(
     const std::vector<CollisionBody<D>>& bodies, const BodyPair& pair, const NarrowPhaseSettings& settings,
-    DetectionCounters* counters, std::vector<InterferenceCandidate<D>>& scratch) {
+    DetectionCounters* counters, std::vector<InterferenceCandidate<D>>& scratch,
+    PairCandidateLists<D>* lists = nullptr) {
   const int n = static_cast<int>(bodies.size());
   if (pair.first < 0 || pair.first >= n || pair.second < 0 || pair.second >= n || pair.first == pair.second) {
     std::ostringstream msg;
@@ -548,15 +665,53 @@ std::optional<InterferenceSample<D>> deepestApproachingInPair(
     msg << "appendSamplesInside: settings.cullMargin must be finite and >= 0, got " << settings.cullMargin;
     throw std::invalid_argument(msg.str());
   }
+  if (!std::isfinite(settings.candidateReach) || settings.candidateReach < 0.0) {
+    std::ostringstream msg;
+    msg << "deepestApproachingInPair: settings.candidateReach must be finite and >= 0, got "
+        << settings.candidateReach;
+    throw std::invalid_argument(msg.str());
+  }
   detail::checkPose<D>(a.pose, pair.first, "appendSamplesInside");
   detail::checkPose<D>(b.pose, pair.second, "appendSamplesInside");
   // Each body's rotation matrix once per pair (pairInterference() builds each twice).
   const Mat<D> Ra = rotationMatrix<D>(a.pose.orientation);
   const Mat<D> Rb = rotationMatrix<D>(b.pose.orientation);
   scratch.clear();
-  detail::appendCandidatesInside<D>(a, Ra, b, Rb, pair.second, true, scratch, settings, counters);
-  detail::appendCandidatesInside<D>(b, Rb, a, Ra, pair.first, false, scratch, settings, counters);
+  detail::appendCandidatesInside<D>(a, Ra, b, Rb, pair.second, true, scratch, settings, counters,
+                                    lists != nullptr ? &lists->firstInSecond : nullptr);
+  detail::appendCandidatesInside<D>(b, Rb, a, Ra, pair.first, false, scratch, settings, counters,
+                                    lists != nullptr ? &lists->secondInFirst : nullptr);
   if (counters != nullptr) ++counters->pairQueries;
+  // The approach test of candidate `index` (Eqs. (7.3)-(7.5)): the sample when it approaches.
+  const auto approaching = [&](std::size_t index) -> std::optional<InterferenceSample<D>> {
+    const InterferenceCandidate<D>& c = scratch[index];
+    const CollisionBody<D>& owner = c.firstOwns ? a : b;
+    const CollisionBody<D>& other = c.firstOwns ? b : a;
+    InterferenceSample<D> s;
+    const Mat<D>& Rowner = c.firstOwns ? Ra : Rb;
+    const Mat<D>& Rother = c.firstOwns ? Rb : Ra;
+    s.point = detail::poseToWorld<D>(owner.pose, Rowner,
+                                     owner.shape->surfaceSamples()[static_cast<std::size_t>(c.sampleIndex)]);
+    s.depth = c.depth;
+    s.normal = detail::poseDirectionToWorld<D>(other.pose, Rother, other.shape->normal(c.inPenetrated));  // Eq. (7.3)
+    s.owner = c.firstOwns ? pair.first : pair.second;
+    s.other = c.firstOwns ? pair.second : pair.first;
+    s.sampleIndex = c.sampleIndex;
+    const Vec<D> rOwner = s.point - owner.pose.position;
+    const Vec<D> rOther = s.point - other.pose.position;
+    const Vec<D> u = owner.body->pointVelocity(rOwner) - other.body->pointVelocity(rOther);  // Eq. (7.4)
+    if (u.dot(s.normal) < 0.0) return s;                                                      // Eq. (7.5)
+    return std::nullopt;
+  };
+  const std::size_t count = scratch.size();
+  if (count == 0) return std::nullopt;
+  // The first key, the smallest (depth, position), by one scan: in the impulse loops the
+  // deepest candidate usually approaches, and then nothing needs ordering.
+  std::size_t first = 0;
+  for (std::size_t i = 1; i < count; ++i) {
+    if (scratch[i].depth < scratch[first].depth) first = i;  // ties keep the earlier position
+  }
+  if (std::optional<InterferenceSample<D>> s = approaching(first)) return s;
   // The candidates by (depth, order): a stable sort by depth, since a candidate's position
   // in scratch is its order. Only (depth, position) keys are ordered, never the candidates
   // themselves; no depth is NaN (phi < 0) and positions are unique, so the keys are totally
@@ -569,7 +724,6 @@ std::optional<InterferenceSample<D>> deepestApproachingInPair(
   // on every query).
   using Key = std::pair<double, int>;
   constexpr std::size_t kFewKeys = 16;
-  const std::size_t count = scratch.size();
   double fewDepth[kFewKeys];
   int fewPosition[kFewKeys];
   thread_local std::vector<Key> many;
@@ -591,6 +745,7 @@ std::optional<InterferenceSample<D>> deepestApproachingInPair(
       fewPosition[j] = static_cast<int>(i);
     }
   }
+  // The rest in key order; the first key comes first in it and was tested above.
   for (std::size_t next = 0; next < count; ++next) {
     std::size_t index = 0;
     if (useHeap) {
@@ -599,23 +754,8 @@ std::optional<InterferenceSample<D>> deepestApproachingInPair(
     } else {
       index = static_cast<std::size_t>(fewPosition[next]);
     }
-    const InterferenceCandidate<D>& c = scratch[index];
-    const CollisionBody<D>& owner = c.firstOwns ? a : b;
-    const CollisionBody<D>& other = c.firstOwns ? b : a;
-    InterferenceSample<D> s;
-    const Mat<D>& Rowner = c.firstOwns ? Ra : Rb;
-    const Mat<D>& Rother = c.firstOwns ? Rb : Ra;
-    s.point = detail::poseToWorld<D>(owner.pose, Rowner,
-                                     owner.shape->surfaceSamples()[static_cast<std::size_t>(c.sampleIndex)]);
-    s.depth = c.depth;
-    s.normal = detail::poseDirectionToWorld<D>(other.pose, Rother, other.shape->normal(c.inPenetrated));  // Eq. (7.3)
-    s.owner = c.firstOwns ? pair.first : pair.second;
-    s.other = c.firstOwns ? pair.second : pair.first;
-    s.sampleIndex = c.sampleIndex;
-    const Vec<D> rOwner = s.point - owner.pose.position;
-    const Vec<D> rOther = s.point - other.pose.position;
-    const Vec<D> u = owner.body->pointVelocity(rOwner) - other.body->pointVelocity(rOther);  // Eq. (7.4)
-    if (u.dot(s.normal) < 0.0) return s;                                                      // Eq. (7.5)
+    if (next == 0) continue;  // index == first: keys are unique, so the smallest is the scan's
+    if (std::optional<InterferenceSample<D>> s = approaching(index)) return s;
   }
   return std::nullopt;
 }

@@ -55,6 +55,8 @@ Vec<D> unitAxis(int k) {
 /// Sphere (3D) or disk (2D) of the given radius about the origin: phi = |x| - r.
 template <int D>
 struct SphereSdf {
+  /// phi is the exact signed Euclidean distance, so |phi(x) - phi(y)| <= |x - y|.
+  static constexpr bool exactDistance = true;
   double radius = 1.0;
 
   explicit SphereSdf(double r = 1.0) : radius(r) {
@@ -92,6 +94,8 @@ struct SphereSdf {
 /// the nearest face.
 template <int D>
 struct BoxSdf {
+  /// phi is the exact signed Euclidean distance, so |phi(x) - phi(y)| <= |x - y|.
+  static constexpr bool exactDistance = true;
   Vec<D> halfExtents = Vec<D>::Constant(0.5);
 
   explicit BoxSdf(const Vec<D>& h = Vec<D>::Constant(0.5)) : halfExtents(h) {
@@ -138,6 +142,8 @@ struct BoxSdf {
 /// With rho = |(x, y)| and q = (rho - R, z) (2D: q = rho - R), phi = |q| - r (Eq. (6.17)).
 template <int D>
 struct TorusSdf {
+  /// phi is the exact signed Euclidean distance, so |phi(x) - phi(y)| <= |x - y|.
+  static constexpr bool exactDistance = true;
   double majorRadius = 0.5;
   double minorRadius = 0.2;
 
@@ -195,6 +201,8 @@ struct TorusSdf {
 /// the last axis. phi = |x - c| - r with c the segment point nearest x (Eq. (6.18)).
 template <int D>
 struct CapsuleSdf {
+  /// phi is the exact signed Euclidean distance, so |phi(x) - phi(y)| <= |x - y|.
+  static constexpr bool exactDistance = true;
   double halfLength = 0.5;
   double radius = 0.25;
 
@@ -244,6 +252,8 @@ struct CapsuleSdf {
 /// phi is the 2D box distance of q (Eq. (6.19)).
 template <int D>
 struct CylinderSdf {
+  /// phi is the exact signed Euclidean distance, so |phi(x) - phi(y)| <= |x - y|.
+  static constexpr bool exactDistance = true;
   double radius = 0.5;
   double halfHeight = 0.5;
 
@@ -325,6 +335,15 @@ class AnalyticShape final : public Shape<D> {
   Vec<D> normal(const Vec<D>& x) const override { return sdf_.normal(x); }
   const std::vector<Vec<D>>& surfaceSamples() const override { return mesh_.vertices; }
   const SampleChunks<D>* sampleChunks() const override { return &chunks_; }
+  /// 1 when `Sdf` says it is an exact signed distance (`static constexpr bool exactDistance`):
+  /// the distance to a set is 1-Lipschitz. 0 (unknown) for any other `Sdf`.
+  double distanceLipschitz() const override {
+    if constexpr (requires { Sdf::exactDistance; }) {
+      return Sdf::exactDistance ? 1.0 : 0.0;
+    } else {
+      return 0.0;
+    }
+  }
   Aabb<D> bounds() const override { return sdf_.bounds(); }
   std::string describe() const override {
     std::ostringstream out;

@@ -29,6 +29,7 @@ class SampleChunks {
 
   SampleChunks() = default;
   explicit SampleChunks(const std::vector<Vec<D>>& samples) : count_(samples.size()) {
+    for (const Vec<D>& s : samples) radius_ = std::max(radius_, s.norm());
     for (std::size_t first = 0; first < count_; first += chunkSize) {
       Aabb<D> box;
       for (std::size_t k = first; k < std::min(count_, first + chunkSize); ++k) box.extend(samples[k]);
@@ -44,9 +45,12 @@ class SampleChunks {
   std::size_t sampleCount() const { return count_; }
   const std::vector<Aabb<D>>& chunks() const { return chunks_; }
   const std::vector<Aabb<D>>& groups() const { return groups_; }
+  /// The largest distance of a sample from the body-frame origin, max |s|.
+  double radius() const { return radius_; }
 
  private:
   std::size_t count_ = 0;
+  double radius_ = 0.0;
   std::vector<Aabb<D>> chunks_;
   std::vector<Aabb<D>> groups_;
 };

@@ -143,6 +143,9 @@ class SdfGrid {
   /// Bytes of node storage (8 per node).
   std::size_t memoryBytes() const { return values_.size() * sizeof(double); }
   SdfGradientMethod gradientMethod() const { return gradient_; }
+  /// A Lipschitz bound L of value(): |value(x) - value(y)| <= L |x - y| everywhere, from the
+  /// node values (chapter 7, "Candidate lists"); 0 if a node value is not finite.
+  double lipschitzBound() const { return lipschitz_; }
   /// Build statistics (zero for a grid made from values).
   const SdfBuildStats& stats() const { return stats_; }
   void setStats(const SdfBuildStats& stats) { stats_ = stats; }
@@ -167,6 +170,7 @@ class SdfGrid {
   std::vector<double> values_;
   SdfGradientMethod gradient_ = SdfGradientMethod::CentralDifferences;
   SdfBuildStats stats_;
+  double lipschitz_ = 0.0;
 };
 // [sdf_grid_class]
 
@@ -255,6 +259,7 @@ class GridShape final : public Shape<D> {
   Vec<D> normal(const Vec<D>& x) const override { return grid_.normal(x); }
   const std::vector<Vec<D>>& surfaceSamples() const override { return mesh_.vertices; }
   const SampleChunks<D>* sampleChunks() const override { return &chunks_; }
+  double distanceLipschitz() const override { return grid_.lipschitzBound(); }
   /// The mesh's box, computed once at construction (the mesh is fixed from then on):
   /// the narrow phase asks for it on every query, and looping over every vertex each
   /// time made it a sixth of a formed pile's step.

@@ -46,6 +46,26 @@ SdfGrid<D>::SdfGrid(const Vec<D>& origin, double cellSize, const Index& nodeCoun
   Vec<D> upper;
   for (int k = 0; k < D; ++k) upper[k] = origin_[k] + h_ * (n_[k] - 1);
   box_ = Aabb<D>{origin_, upper};
+  // [grid_lipschitz]
+  // Inside a cell, d phi / d x_k is a weighted mean (weights >= 0, summing to 1) of the
+  // differences (phi_hi - phi_lo) / h of the cell's edges along axis k (Eq. (6.11)), so
+  // |d phi / d x_k| <= a_k, the largest such difference anywhere on the grid, and
+  // |grad phi| <= sqrt(sum a_k^2) in every cell; phi is continuous, so that bounds it on the
+  // whole box. Outside, phi(p(x)) + |x - p(x)| (Eq. (6.14)) adds at most 1 (the distance to a
+  // box is 1-Lipschitz, and so is the nearest point p).
+  double sum = 0.0;
+  for (int k = 0; k < D; ++k) {
+    double a = 0.0;
+    for (std::int64_t i = 0; i < total; ++i) {
+      if ((i / strides_[k]) % n_[k] == n_[k] - 1) continue;  // no node above along k
+      a = std::max(a, std::abs(values_[static_cast<std::size_t>(i + strides_[k])] -
+                               values_[static_cast<std::size_t>(i)]));
+    }
+    sum += (a / h_) * (a / h_);
+  }
+  lipschitz_ = std::sqrt(sum) + 1.0;
+  if (!std::isfinite(lipschitz_)) lipschitz_ = 0.0;  // unknown: no candidate lists
+  // [grid_lipschitz]
 }
 
 template <int D>

@@ -54,6 +54,12 @@ class Shape {
   /// built with the shape; null for a shape without them, whose samples the narrow phase
   /// then transforms one by one.
   virtual const SampleChunks<D>* sampleChunks() const { return nullptr; }
+
+  /// A Lipschitz bound L of signedDistance(): |phi(x) - phi(y)| <= L |x - y| for all x, y
+  /// (chapter 7, "Candidate lists"). 1 for an exact signed distance, a bound computed from the
+  /// node values for a grid; 0, the default, when no bound is known, and then the narrow phase
+  /// keeps no candidate lists against this shape.
+  virtual double distanceLipschitz() const { return 0.0; }
 };
 // [shape_interface]
 

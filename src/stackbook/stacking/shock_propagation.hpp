@@ -64,8 +64,12 @@ ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings
   // [graph_direction_test]
   std::vector<ContactPair> edges;
   std::vector<InterferenceCandidate<D>> scratch;  // reused by every query below
-  // One candidate pair is tested twice, each body advanced in turn: bound 2 * pairs.
+  // One candidate pair is tested twice, each body advanced in turn: bound 2 * pairs. The
+  // second test sees the pair moved by dt^2 |a| from the first, so chapter 7's candidate
+  // lists made by the first usually answer it.
+  PairCandidateLists<D> lists;
   for (const BodyPair& pair : candidates) {
+    lists.firstInSecond.made = lists.secondInFirst.made = false;  // a new pair: none yet
     for (const int p : {pair.first, pair.second}) {
       const int q = p == pair.first ? pair.second : pair.first;
       const std::size_t k = static_cast<std::size_t>(p);
@@ -78,7 +82,7 @@ ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings
       // full query.
       const bool approaching =
           settings.narrow.surfaceQuery == SurfaceQuery::Samples
-              ? deepestApproachingInPair<D>(views, pair, settings.narrow, counters, scratch).has_value()
+              ? deepestApproachingInPair<D>(views, pair, settings.narrow, counters, scratch, &lists).has_value()
               : deepestApproachingSample<D>(pairInterference<D>(views, pair, settings.narrow, counters), views)
                     .has_value();
       if (approaching) {
@@ -239,15 +243,17 @@ void shockPropagationPass(World<D>& world, const ContactGraph& graph, const Cont
   }  // [shock_levels_loop]
   FreezeGuard<D> frozen(world);
   std::vector<BodyPair> pairs;
+  std::vector<PairCandidateLists<D>> lists;  // chapter 7's candidate lists, for the level's sweeps
   for (std::size_t l = 0; l < levels.levelCount(); ++l) {  // bottom up, Eq. (9.1)
     if (isolated[l] != 0) continue;
     pairs.clear();
     for (const ContactPair& c : levels.pairs(l)) pairs.push_back(BodyPair{c.below, c.above});  // Eq. (9.2)
+    lists.assign(pairs.size(), PairCandidateLists<D>{});
     // A sweep that applies no impulse ends the level: nothing approaches, and no later
     // sweep can find an approach, since restitution only scales an impulse (Eq. (8.5)).
     for (int s = 1; s <= shock.sweepsPerLevel && !pairs.empty(); ++s) {
       largest = 0.0;
-      if (sweepPairs<D>(world, views, pairs, spec, s, settings.dt, settings, counters) == 0) break;
+      if (sweepPairs<D>(world, views, pairs, spec, s, settings.dt, settings, counters, &lists) == 0) break;
       if (shock.levelApproachTolerance > 0.0 && largest <= shock.levelApproachTolerance) break;
     }
     for (const int body : levels.bodies(l)) frozen.freeze(body);  // Eq. (9.4)

@@ -117,7 +117,7 @@ struct StageSpec {
 template <int D>
 int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const BodyPair& pair,
                 const StageSpec& spec, int sweep, double dt, const StepSettings& settings,
-                StageCounters& counters) {
+                StageCounters& counters, PairCandidateLists<D>* lists = nullptr) {
   int applied = 0;
   // The candidates of the lazy deepest-sample search, kept across calls (one buffer per
   // thread), so that a pair query allocates nothing once the buffer has grown.
@@ -131,7 +131,7 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
     const std::optional<InterferenceSample<D>> point =
         settings.impulsePoint.rule == ImpulsePointRule::Deepest &&
                 settings.detection.narrow.surfaceQuery == SurfaceQuery::Samples
-            ? deepestApproachingInPair<D>(views, pair, settings.detection.narrow, &counters.detection, scratch)
+            ? deepestApproachingInPair<D>(views, pair, settings.detection.narrow, &counters.detection, scratch, lists)
             : impulsePoint<D>(pairInterference<D>(views, pair, settings.detection.narrow, &counters.detection),
                               views, settings.impulsePoint);  // Eqs. (7.6), (8.10)
     if (!point) return applied;
@@ -254,7 +254,7 @@ template <int D>
 int sweepIslands(World<D>& world, std::vector<CollisionBody<D>>& views,
                  const std::vector<BodyPair>& pairs, const PairIslands& islands,
                  const StageSpec& spec, int sweep, double dt, const StepSettings& settings,
-                 StageCounters& counters, int threads) {
+                 StageCounters& counters, int threads, std::vector<PairCandidateLists<D>>* lists = nullptr) {
   const std::size_t count = islands.islandCount();
   // Largest islands first, so that a big island is not started last (ties: island order).
   std::vector<std::size_t> order(count);
@@ -290,7 +290,7 @@ int sweepIslands(World<D>& world, std::vector<CollisionBody<D>>& views,
         try {
           ++local[c].pairVisits;
           applied[c] += resolvePair<D>(world, views, pairs[p], ownSpec ? islandSpec[c] : spec, sweep,
-                                       dt, settings, local[c]);
+                                       dt, settings, local[c], lists != nullptr ? &(*lists)[p] : nullptr);
           if (recording) recordPair[c].resize(recorders[c].size(), p);
         } catch (...) {
           error[c] = std::current_exception();
@@ -340,23 +340,45 @@ int sweepIslands(World<D>& world, std::vector<CollisionBody<D>>& views,
 template <int D>
 int sweepPairs(World<D>& world, std::vector<CollisionBody<D>>& views,
                const std::vector<BodyPair>& pairs, const StageSpec& spec, int sweep, double dt,
-               const StepSettings& settings, StageCounters& counters) {
+               const StepSettings& settings, StageCounters& counters,
+               std::vector<PairCandidateLists<D>>* lists = nullptr) {
   ++counters.sweeps;
+  if (lists != nullptr && lists->size() != pairs.size()) lists->resize(pairs.size());
   const int threads = resolvedThreadCount(settings.parallel.threads);
   if (threads > 1 && pairs.size() >= static_cast<std::size_t>(std::max(settings.parallel.minPairs, 2))) {
     const PairIslands islands = pairIslands<D>(world, pairs);
     if (islands.islandCount() > 1) {
-      return sweepIslands<D>(world, views, pairs, islands, spec, sweep, dt, settings, counters, threads);
+      return sweepIslands<D>(world, views, pairs, islands, spec, sweep, dt, settings, counters, threads, lists);
     }
   }
   int applied = 0;
-  for (const BodyPair& pair : pairs) {
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
     ++counters.pairVisits;
-    applied += resolvePair<D>(world, views, pair, spec, sweep, dt, settings, counters);
+    applied += resolvePair<D>(world, views, pairs[p], spec, sweep, dt, settings, counters,
+                              lists != nullptr ? &(*lists)[p] : nullptr);
   }
   return applied;
 }
 // [sweep_pairs]
+
+/// The candidate lists of `pairs` (chapter 7): those of a pair in `previous` (with lists
+/// `previousLists`, in the same order) move over, a new pair starts with none. Both pair
+/// lists are in the broad phase's sorted (i, j) order, so one merge finds them.
+template <int D>
+std::vector<PairCandidateLists<D>> carriedCandidateLists(const std::vector<BodyPair>& previous,
+                                                         std::vector<PairCandidateLists<D>> previousLists,
+                                                         const std::vector<BodyPair>& pairs) {
+  std::vector<PairCandidateLists<D>> lists(pairs.size());
+  const auto key = [](const BodyPair& p) { return std::pair<int, int>(p.first, p.second); };
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < pairs.size() && j < previous.size() && j < previousLists.size(); ++i) {
+    while (j < previous.size() && key(previous[j]) < key(pairs[i])) ++j;
+    if (j < previous.size() && j < previousLists.size() && key(previous[j]) == key(pairs[i])) {
+      lists[i] = std::move(previousLists[j]);
+    }
+  }
+  return lists;
+}
 
 // [impulse_stage]
 /// One stage: up to spec.sweeps sweeps; each sweep finds the overlapping pairs at the
@@ -373,11 +395,17 @@ void runImpulseStage(World<D>& world, const StageSpec& spec, double dt,
   StageSpec measured = spec;
   double largest = 0.0;
   if (spec.stageApproachTolerance > 0.0) measured.largestApproach = &largest;
+  // Candidate lists (chapter 7) live for the stage: a pair the broad phase reports again in
+  // the next sweep keeps its lists (carriedCandidateLists()).
+  std::vector<BodyPair> previousPairs;
+  std::vector<PairCandidateLists<D>> lists;
   for (int sweep = 1; sweep <= spec.sweeps; ++sweep) {
     const std::vector<BodyPair> pairs =
         sweepAndPrune<D>(views, settings.detection.broad, &counters.detection);
+    lists = carriedCandidateLists<D>(previousPairs, std::move(lists), pairs);
+    previousPairs = pairs;
     largest = 0.0;
-    if (sweepPairs<D>(world, views, pairs, measured, sweep, dt, settings, counters) == 0) break;
+    if (sweepPairs<D>(world, views, pairs, measured, sweep, dt, settings, counters, &lists) == 0) break;
     if (spec.stageApproachTolerance > 0.0 && largest <= spec.stageApproachTolerance) break;
   }
   counters.seconds +=
@@ -390,12 +418,13 @@ void runImpulseStage(World<D>& world, const StageSpec& spec, double dt,
 #define STACKBOOK_EXTERN_IMPULSE_STAGE(D)                                                  \
   extern template int resolvePair<D>(World<D>&, std::vector<CollisionBody<D>>&, const BodyPair&, \
                                      const StageSpec&, int, double, const StepSettings&,        \
-                                     StageCounters&);                                            \
+                                     StageCounters&, PairCandidateLists<D>*);                    \
   extern template std::vector<CollisionBody<D>> stageViews<D>(const World<D>&, Lookahead, double, \
                                                               RotationUpdate, const ParallelSettings&); \
   extern template int sweepPairs<D>(World<D>&, std::vector<CollisionBody<D>>&,                  \
                                     const std::vector<BodyPair>&, const StageSpec&, int, double, \
-                                    const StepSettings&, StageCounters&);                       \
+                                    const StepSettings&, StageCounters&,                        \
+                                    std::vector<PairCandidateLists<D>>*);                       \
   extern template void runImpulseStage<D>(World<D>&, const StageSpec&, double,                  \
                                           const StepSettings&, StageCounters&);
 STACKBOOK_EXTERN_IMPULSE_STAGE(2)
