@@ -303,6 +303,10 @@ int main(int argc, char** argv) {
       if (csv) printCsvRow(csv, c.row);
       for (const RunResult& r : c.row.runs) failures += r.ok ? 0 : 1;
     }
+    // Each scene's rows reach the terminal, a pipe or the CSV as soon as the scene is done,
+    // so that a long run stopped part way keeps the scenes it finished.
+    std::fflush(stdout);
+    if (csv) std::fflush(csv);
   }
   if (csv) std::fclose(csv);
   std::printf("\nAccuracy is measured after the last repetition against the state when timing started (piles: once "
