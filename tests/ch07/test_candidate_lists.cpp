@@ -173,6 +173,50 @@ TEST_CASE_TEMPLATE("a pair against a shape with no Lipschitz bound is asked with
   CHECK_FALSE(lists.secondInFirst.made);
 }
 
+TEST_CASE_TEMPLATE("a candidate list answers only for the shapes it was made for", Dim, In2D, In3D) {
+  // Lists made for two small boxes, then asked at the same relative pose by two larger boxes:
+  // remade, with the plain loop's answer. Then asked by another pair of the larger boxes at
+  // the same relative pose elsewhere: answered from the lists (the answer depends on the
+  // shapes and their relative pose only).
+  constexpr int D = Dim::value;
+  const BoxShape<D> small = boxShape<D>(Vec<D>::Constant(0.5), 4);
+  const BoxShape<D> large = boxShape<D>(Vec<D>::Constant(0.6), 4);
+  RigidBody<D> a = makeDynamicBody<D>(1.0, AngVec<D>::Constant(1.0));
+  RigidBody<D> b = makeDynamicBody<D>(1.0, AngVec<D>::Constant(1.0));
+  b.position = Vec<D>(0.95 * Vec<D>::Unit(D - 1));
+  b.velocity = Vec<D>(-Vec<D>::Unit(D - 1));
+  PairCandidateLists<D> lists;
+  std::vector<InterferenceCandidate<D>> scratch, plain;
+  DetectionCounters counters;
+  NarrowPhaseSettings off;
+  off.candidateReach = 0.0;
+  const std::vector<CollisionBody<D>> smallPair{collisionBody<D>(a, small), collisionBody<D>(b, small)};
+  CHECK(deepestApproachingInPair<D>(smallPair, BodyPair{0, 1}, {}, &counters, scratch, &lists).has_value());
+  CHECK(counters.candidateListsMade == 2);
+  const std::vector<CollisionBody<D>> largePair{collisionBody<D>(a, large), collisionBody<D>(b, large)};
+  const std::optional<InterferenceSample<D>> x =
+      deepestApproachingInPair<D>(largePair, BodyPair{0, 1}, {}, &counters, scratch, &lists);
+  const std::optional<InterferenceSample<D>> y = deepestApproachingInPair<D>(largePair, BodyPair{0, 1}, off, nullptr, plain);
+  CHECK(counters.candidateListsMade == 4);
+  CHECK(counters.listedQueries == 0);
+  REQUIRE(x.has_value());
+  REQUIRE(y.has_value());
+  CHECK(x->sampleIndex == y->sampleIndex);
+  CHECK(x->depth == y->depth);
+  CHECK(scratch.size() == plain.size());
+  RigidBody<D> c = a, d = b;
+  c.position += Vec<D>(5.0 * Vec<D>::Unit(0));
+  d.position += Vec<D>(5.0 * Vec<D>::Unit(0));
+  const std::vector<CollisionBody<D>> elsewhere{collisionBody<D>(c, large), collisionBody<D>(d, large)};
+  const std::optional<InterferenceSample<D>> z =
+      deepestApproachingInPair<D>(elsewhere, BodyPair{0, 1}, {}, &counters, scratch, &lists);
+  CHECK(counters.candidateListsMade == 4);
+  CHECK(counters.listedQueries == 2);
+  REQUIRE(z.has_value());
+  CHECK(z->sampleIndex == y->sampleIndex);
+  CHECK(z->depth == y->depth);
+}
+
 TEST_CASE_TEMPLATE("the narrow phase refuses a candidate reach that is negative or not finite", Dim, In2D, In3D) {
   constexpr int D = Dim::value;
   const BoxShape<D> box = boxShape<D>(Vec<D>::Constant(0.5));

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "stackbook/geometry/aabb.hpp"
+#include "stackbook/geometry/shape.hpp"
 
 namespace stackbook {
 
@@ -20,6 +21,8 @@ namespace stackbook {
 template <int D>
 struct CandidateList {
   bool made = false;
+  const Shape<D>* owner = nullptr;       ///< the shapes it was made for: a list answers only for them
+  const Shape<D>* penetrated = nullptr;
   Mat<D> M = Mat<D>::Identity();  ///< owner frame -> penetrated frame at making (Eq. (7.2))
   Vec<D> t = Vec<D>::Zero();
   double reach = 0.0;   ///< how far a sample may move before the list must be remade
@@ -32,9 +35,13 @@ struct CandidateList {
     return (Mnow - M).norm() * radius + (tnow - t).norm();
   }
 
-  /// True when the list still answers for the pose (Mnow, tnow).
-  bool covers(const Mat<D>& Mnow, const Vec<D>& tnow, double radius) const {
-    return made && moved(Mnow, tnow, radius) + hair <= reach;
+  /// True when the list still answers for these shapes at the pose (Mnow, tnow). The answer
+  /// depends on the two shapes and their relative pose only, so a list handed to another pair
+  /// of the same shapes is still right, and one handed to other shapes is remade.
+  bool covers(const Shape<D>& ownerShape, const Shape<D>& penetratedShape, const Mat<D>& Mnow,
+              const Vec<D>& tnow, double radius) const {
+    return made && owner == &ownerShape && penetrated == &penetratedShape &&
+           moved(Mnow, tnow, radius) + hair <= reach;
   }
 };
 

@@ -240,6 +240,29 @@ struct SampleWork {
 /// boxB (NearSampleRuns), in sample order, each carried into the penetrated body's frame
 /// (Eq. (7.2)) and box-tested (Eq. (7.7)) before phi is asked; inside(k, xB, phi) receives
 /// each sample k with phi < 0 (Eq. (7.1)), and the caller decides what to record.
+/// One sample of a direction's loop: sample k (body-frame point s) carried into the
+/// penetrated body's frame (Eq. (7.2)), box-tested (Eq. (7.7)), and given to inside(k, xB, phi)
+/// when phi < 0 (Eq. (7.1)), with the work counted. The loop over every sample and the loop
+/// over a candidate list (chapter 7, "Candidate lists") both test their samples here, so a
+/// sample that both visit is computed by the same operations, with the same bits.
+template <int D, class Inside>
+[[gnu::always_inline]] inline void testSample(std::size_t k, const Vec<D>& s, const Shape<D>& shapeB,
+                                              int penetratedIndex, const Aabb<D>& box, const Mat<D>& M,
+                                              const Vec<D>& t, bool cullByBounds, std::int64_t& culled,
+                                              std::int64_t& queries, std::int64_t& found, Inside& inside) {
+  const Vec<D> xB = M * s + t;                // Eq. (7.2)
+  if (cullByBounds && !box.contains(xB)) {    // Eq. (7.7)
+    ++culled;
+    return;
+  }
+  ++queries;
+  const double phi = shapeB.signedDistance(xB);
+  if (std::isnan(phi)) throwNanDistance<D>(shapeB, xB, penetratedIndex);
+  if (!(phi < 0.0)) return;                   // Eq. (7.1)
+  ++found;
+  inside(k, xB, phi);
+}
+
 template <int D, class Inside>
 [[gnu::always_inline]] inline void forEachSampleInside(const Shape<D>& owner, const std::vector<Vec<D>>& samples,
                                                        const Shape<D>& shapeB, int penetratedIndex,
@@ -255,17 +278,7 @@ template <int D, class Inside>
   NearSampleRuns<D> runs(owner, box, Mk, tk, cullByBounds);
   for (std::size_t first = 0, last = 0; runs.next(first, last);) {
     for (std::size_t k = first; k < last; ++k) {
-      const Vec<D> xB = Mk * samples[k] + tk;                           // Eq. (7.2)
-      if (cullByBounds && !box.contains(xB)) {                          // Eq. (7.7)
-        ++culled;
-        continue;
-      }
-      ++queries;
-      const double phi = shapeB.signedDistance(xB);
-      if (std::isnan(phi)) throwNanDistance<D>(shapeB, xB, penetratedIndex);
-      if (!(phi < 0.0)) continue;                                       // Eq. (7.1)
-      ++found;
-      inside(k, xB, phi);
+      testSample<D>(k, samples[k], shapeB, penetratedIndex, box, Mk, tk, cullByBounds, culled, queries, found, inside);
     }
   }
   work.culled += culled + static_cast<std::int64_t>(runs.skipped());
@@ -512,6 +525,8 @@ void makeCandidateList(CandidateList<D>& list, const Shape<D>& owner, const std:
                        const Aabb<D>& boxB, const Mat<D>& M, const Vec<D>& t,
                        const NarrowPhaseSettings& settings, SampleWork& work, Inside&& inside) {
   list.made = true;
+  list.owner = &owner;
+  list.penetrated = &shapeB;
   list.M = M;
   list.t = t;
   list.reach = settings.candidateReach * radius;
@@ -561,20 +576,14 @@ void forEachListedSampleInside(const CandidateList<D>& list, const std::vector<V
                                const Shape<D>& shapeB, int penetratedIndex, const Aabb<D>& boxB,
                                const Mat<D>& M, const Vec<D>& t, bool cullByBounds, SampleWork& work,
                                Inside&& inside) {
+  // Local copies, as in forEachSampleInside(): the same values, kept in registers.
+  const Mat<D> Mk = M;
+  const Vec<D> tk = t;
+  const Aabb<D> box = boxB;
   std::int64_t culled = 0, queries = 0, found = 0;
   for (const int index : list.samples) {
     const std::size_t k = static_cast<std::size_t>(index);
-    const Vec<D> xB = M * samples[k] + t;  // Eq. (7.2)
-    if (cullByBounds && !boxB.contains(xB)) {  // Eq. (7.7)
-      ++culled;
-      continue;
-    }
-    ++queries;
-    const double phi = shapeB.signedDistance(xB);
-    if (std::isnan(phi)) throwNanDistance<D>(shapeB, xB, penetratedIndex);
-    if (!(phi < 0.0)) continue;  // Eq. (7.1)
-    ++found;
-    inside(k, xB, phi);
+    testSample<D>(k, samples[k], shapeB, penetratedIndex, box, Mk, tk, cullByBounds, culled, queries, found, inside);
   }
   work.culled += culled;
   work.queries += queries;
@@ -606,7 +615,7 @@ void appendCandidatesInside(const CollisionBody<D>& owner, const Mat<D>& RA, con
   const double lipschitz = shapeB.distanceLipschitz();
   if (list != nullptr && settings.candidateReach > 0.0 && lipschitz > 0.0 && chunks != nullptr &&
       chunks->sampleCount() == samples.size()) {
-    if (list->covers(M, t, chunks->radius())) {
+    if (list->covers(*owner.shape, shapeB, M, t, chunks->radius())) {
       forEachListedSampleInside<D>(*list, samples, shapeB, penetratedIndex, boxB, M, t, settings.cullByBounds,
                                    work, record);
       addSampleWork(counters, list->samples.size(), work);
