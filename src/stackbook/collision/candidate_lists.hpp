@@ -17,7 +17,7 @@ namespace stackbook {
 // [candidate_list]
 /// One direction of a pair: the samples of the owner that may fall inside the penetrated
 /// body while every sample has moved, in the penetrated body's frame, at most `reach` from
-/// where it was when the list was made (Eq. (7.10)).
+/// where it was when the list was made (Eq. (7.12)).
 template <int D>
 struct CandidateList {
   bool made = false;
@@ -30,7 +30,7 @@ struct CandidateList {
   std::vector<int> samples;  ///< indices into the owner's surfaceSamples(), ascending
 
   /// How far any sample s (|s| <= radius) has moved since the list was made, at most:
-  /// |(M' - M) s + (t' - t)| <= ||M' - M||_F radius + |t' - t| (Eq. (7.9)).
+  /// |(M' - M) s + (t' - t)| <= ||M' - M||_F radius + |t' - t| (Eq. (7.11)).
   double moved(const Mat<D>& Mnow, const Vec<D>& tnow, double radius) const {
     return (Mnow - M).norm() * radius + (tnow - t).norm();
   }

@@ -323,7 +323,7 @@ struct NarrowPhaseSettings {
   /// also the exact deepest point of every shape that has the query (Shape::deepestPoint,
   /// the convex analytic primitives), which replaces the samples of a sphere or disk.
   SurfaceQuery surfaceQuery = SurfaceQuery::Samples;
-  /// Candidate lists (chapter 7, "Candidate lists", Eq. (7.10)): the impulse loops keep, for
+  /// Candidate lists (chapter 7, "Candidate lists", Eq. (7.12)): the impulse loops keep, for
   /// each pair and direction, the samples that can still be inside while every sample has
   /// moved at most this fraction of the owner's sample radius, and ask only those until the
   /// bodies move farther (>= 0; 0: no lists, every ask runs the loop over all samples).
@@ -517,7 +517,7 @@ namespace detail {
 /// Makes `list` for the pose (M, t) while doing the direction's ordinary work: every sample
 /// of the runs that may reach boxB grown by the reach (NearSampleRuns) is carried into the
 /// penetrated frame; one that lands in the grown box (or any, without culling) gets phi, and
-/// is listed when phi < L (reach + hair) (Eq. (7.10)); inside(k, xB, phi) receives, in sample
+/// is listed when phi < L (reach + hair) (Eq. (7.12)); inside(k, xB, phi) receives, in sample
 /// order, exactly the samples the full loop (forEachSampleInside()) would report.
 template <int D, class Inside>
 void makeCandidateList(CandidateList<D>& list, const Shape<D>& owner, const std::vector<Vec<D>>& samples,
@@ -644,7 +644,7 @@ void appendCandidatesInside(const CollisionBody<D>& owner, const Mat<D>& RA, con
 /// one, and among equally deep ones the first in sample order, exactly as Eq. (7.6) and
 /// its tie rule pick it, with the same bits: each value is computed by the same operations.
 /// `scratch` holds the candidates (reused across calls, so no allocation once it has grown).
-/// `lists`, when given, are the pair's candidate lists (Eq. (7.10)): they are used while
+/// `lists`, when given, are the pair's candidate lists (Eq. (7.12)): they are used while
 /// they cover the bodies' relative pose and remade when they do not, with the same result
 /// bit for bit; the caller keeps them from one ask of the pair to the next.
 /// The bodies must have shapes and finite poses (the caller checks them once). \ref ch07
