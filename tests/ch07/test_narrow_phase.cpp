@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include "stackbook/body/integrate.hpp"
@@ -461,5 +462,65 @@ TEST_CASE_TEMPLATE("the narrow phase rejects missing shapes bad margins bad pose
   CHECK_THROWS_WITH_AS(pairInterference<D>(bodies, {0, 1}), doctest::Contains("no Shape"),
                        std::invalid_argument);
 }
+
+namespace {
+
+/// True when two matrices hold the same bits (a -0.0 is not a +0.0 here).
+template <int D>
+bool rotationBitsEqual(const Mat<D>& a, const Mat<D>& b) {
+  return std::memcmp(a.data(), b.data(), sizeof(double) * D * D) == 0;
+}
+
+/// An orientation from three numbers: the angle in 2D, a normalised quaternion in 3D.
+template <int D>
+Orientation<D> orientationFrom(double a, double b, double c) {
+  if constexpr (D == 2) {
+    (void)b;
+    (void)c;
+    return Eigen::Rotation2Dd(a);
+  } else {
+    return Eigen::Quaterniond(std::cos(a), b, c, 0.5 * a).normalized();
+  }
+}
+
+}  // namespace
+
+// [test_rotation_cache]
+TEST_CASE_TEMPLATE("the rotation matrix of a view is the one its pose gives bit for bit however the pose was set",
+                   Dim, In2D, In3D) {
+  constexpr int D = Dim::value;
+  const RigidBody<D> body = makeDynamicBody<D>(1.0, AngVec<D>::Constant(1.0 / 6.0));
+  const BoxShape<D> shape = boxShape<D>(Vec<D>::Constant(0.5));
+  RandomSource random(71);
+  for (int trial = 0; trial < 200; ++trial) {
+    const double scale = trial < 100 ? 3.0 : 1e4;  // angles of many turns too
+    Pose<D> kept{random.vector<D>(-1.0, 1.0),
+                 orientationFrom<D>(random.uniform(-scale, scale), random.uniform(-1, 1), random.uniform(-1, 1))};
+    CollisionBody<D> view = collisionBodyAt<D>(body, shape, kept);
+    CHECK(rotationBitsEqual<D>(view.poseRotation(), rotationMatrix<D>(kept.orientation)));
+    // Moved by setPose(): the new matrix is kept.
+    const Pose<D> moved{kept.position,
+                        orientationFrom<D>(random.uniform(-scale, scale), random.uniform(-1, 1), random.uniform(-1, 1))};
+    view.setPose(moved);
+    CHECK(rotationBitsEqual<D>(view.poseRotation(), rotationMatrix<D>(moved.orientation)));
+    // Moved by writing the pose directly: the kept matrix is stale and must not be used.
+    view.pose = kept;
+    CHECK(rotationBitsEqual<D>(view.poseRotation(), rotationMatrix<D>(kept.orientation)));
+  }
+  if constexpr (D == 2) {
+    // +0 and -0 compare equal as numbers but give matrices with different bits (the sign of
+    // sin 0), so a cache keyed by == would hand back the wrong one.
+    const Mat<2> plus = rotationMatrix<2>(Eigen::Rotation2Dd(0.0));
+    const Mat<2> minus = rotationMatrix<2>(Eigen::Rotation2Dd(-0.0));
+    REQUIRE_FALSE(rotationBitsEqual<2>(plus, minus));
+    CollisionBody<2> view = collisionBodyAt<2>(body, shape, Pose<2>{Vec<2>::Zero(), Eigen::Rotation2Dd(0.0)});
+    view.pose.orientation = Eigen::Rotation2Dd(-0.0);
+    CHECK(rotationBitsEqual<2>(view.poseRotation(), minus));
+    view.setPose(Pose<2>{Vec<2>::Zero(), Eigen::Rotation2Dd(-0.0)});
+    view.pose.orientation = Eigen::Rotation2Dd(0.0);
+    CHECK(rotationBitsEqual<2>(view.poseRotation(), plus));
+  }
+}
+// [test_rotation_cache]
 
 }  // TEST_SUITE

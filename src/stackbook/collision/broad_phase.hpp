@@ -41,7 +41,8 @@ struct BroadPhaseSettings {
   double margin = 0.0;
 };
 
-/// One proxy per collision view: worldBounds() at the view's pose and its static flag.
+/// One proxy per collision view: worldBounds() at the view's pose (with the view's kept
+/// rotation matrix, the same bits) and its static flag.
 /// Throws std::invalid_argument when a view has no shape. \ref ch07
 template <int D>
 std::vector<BroadPhaseProxy<D>> broadPhaseProxies(const std::vector<CollisionBody<D>>& bodies) {
@@ -53,7 +54,8 @@ std::vector<BroadPhaseProxy<D>> broadPhaseProxies(const std::vector<CollisionBod
       msg << "broadPhaseProxies: body " << i << " has no Shape (shape is null)";
       throw std::invalid_argument(msg.str());
     }
-    proxies.push_back({worldBounds<D>(*bodies[i].shape, bodies[i].pose), bodies[i].isStatic});
+    proxies.push_back({detail::worldBoundsWithMatrix<D>(*bodies[i].shape, bodies[i].pose, bodies[i].poseRotation()),
+                       bodies[i].isStatic});
   }
   return proxies;
 }

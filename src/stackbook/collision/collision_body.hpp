@@ -4,6 +4,7 @@
 /// at and whether it is static; and the world bounding box of a shape at a pose (\ref ch07).
 
 #include <cmath>
+#include <cstring>
 #include <sstream>
 #include <stdexcept>
 
@@ -12,6 +13,43 @@
 #include "stackbook/math/pose.hpp"
 
 namespace stackbook {
+
+// [rotation_cache]
+/// A pose's rotation matrix R, kept with the orientation it was built from. In 2D R is
+/// rebuilt from the angle by a sine and a cosine, and the impulse loops ask the same view
+/// for R after every impulse, so a 2D view keeps it: matrixOf(q) returns the kept R when q
+/// has the same bits as the angle it was built from, and builds R from q otherwise. The
+/// answer is rotationMatrix(q) bit for bit either way, so a stale cache costs time, never a
+/// result. In 3D R is a few products of the quaternion's components, cheaper to build than
+/// to keep, so nothing is kept. \ref ch07
+template <int D>
+class RotationCache {
+ public:
+  /// rotationMatrix(q), built.
+  Mat<D> matrixOf(const Orientation<D>& q) const { return rotationMatrix<D>(q); }
+  /// Nothing to keep in 3D.
+  void keep(const Orientation<D>&) {}
+};
+
+template <>
+class RotationCache<2> {
+ public:
+  /// rotationMatrix(q), from the cache when q's angle has the kept angle's bits.
+  Mat<2> matrixOf(const Orientation<2>& q) const {
+    const double angle = q.angle();
+    return std::memcmp(&angle, &angle_, sizeof angle) == 0 ? R_ : rotationMatrix<2>(q);
+  }
+  /// Keep q's angle and matrix.
+  void keep(const Orientation<2>& q) {
+    angle_ = q.angle();
+    R_ = rotationMatrix<2>(q);
+  }
+
+ private:
+  double angle_ = 0.0;                                 ///< the angle R_ was built from
+  Mat<2> R_ = rotationMatrix<2>(identityOrientation<2>());  ///< R of angle_, bit for bit
+};
+// [rotation_cache]
 
 // [collision_body]
 /// A read-only view of one body for collision detection (\ref ch07).
@@ -25,6 +63,16 @@ struct CollisionBody {
   const Shape<D>* shape = nullptr;     ///< phi, N, surface samples, body-frame bounds
   Pose<D> pose;                        ///< where the shape is tested: current or predicted
   bool isStatic = false;               ///< two static bodies are never paired
+  /// R of `pose`, kept by collisionBodyAt() and setPose(); right for any pose (see RotationCache).
+  RotationCache<D> rotation;
+
+  /// Moves the view to `p` and keeps its rotation matrix.
+  void setPose(const Pose<D>& p) {
+    pose = p;
+    rotation.keep(p.orientation);
+  }
+  /// rotationMatrix(pose.orientation), bit for bit, without rebuilding it when the view kept it.
+  Mat<D> poseRotation() const { return rotation.matrixOf(pose.orientation); }
 };
 // [collision_body]
 
@@ -34,7 +82,9 @@ struct CollisionBody {
 template <int D>
 CollisionBody<D> collisionBodyAt(const RigidBody<D>& body, const Shape<D>& shape,
                                  const Pose<D>& pose) {
-  return CollisionBody<D>{&body, &shape, pose, body.isStatic()};
+  CollisionBody<D> view{&body, &shape, pose, body.isStatic(), {}};
+  view.rotation.keep(pose.orientation);
+  return view;
 }
 
 /// A collision view of `body` with `shape` at the body's current pose. \ref ch07
@@ -65,17 +115,12 @@ void checkCollisionBody(const CollisionBody<D>& view, int index, const char* cal
 }
 
 // [world_bounds]
-/// World-frame bounding box of `shape` placed at `pose`: the smallest axis-aligned box
-/// around the 2^D corners of the body-frame box after p -> x + R p, computed without
-/// visiting the corners: centre x + R c, half-extent |R| h, with |R| the entrywise
-/// absolute value (Eq. (7.8)). Valid for every shape, because the body-frame box holds
-/// the whole body; it is loose when the shape does not fill its box (a sphere: up to
-/// a factor sqrt(D) on a side). An empty body-frame box stays empty. \ref ch07
+namespace detail {
+/// worldBounds() with the pose's rotation matrix R = rotationMatrix(pose.orientation) at hand.
 template <int D>
-Aabb<D> worldBounds(const Shape<D>& shape, const Pose<D>& pose) {
+Aabb<D> worldBoundsWithMatrix(const Shape<D>& shape, const Pose<D>& pose, const Mat<D>& R) {
   const Aabb<D> local = shape.bounds();
   if (local.isEmpty()) return local;
-  const Mat<D> R = rotationMatrix<D>(pose.orientation);
   // x + R c; in 2D with the R above (Eigen rebuilds it on every rotation of a vector, with
   // the same bits), in 3D by the quaternion as Pose::toWorld() does.
   Vec<D> centre;
@@ -86,6 +131,18 @@ Aabb<D> worldBounds(const Shape<D>& shape, const Pose<D>& pose) {
   }
   const Vec<D> half = R.cwiseAbs() * Vec<D>(0.5 * local.extent());  // Eq. (7.8)
   return Aabb<D>{Vec<D>(centre - half), Vec<D>(centre + half)};
+}
+}  // namespace detail
+
+/// World-frame bounding box of `shape` placed at `pose`: the smallest axis-aligned box
+/// around the 2^D corners of the body-frame box after p -> x + R p, computed without
+/// visiting the corners: centre x + R c, half-extent |R| h, with |R| the entrywise
+/// absolute value (Eq. (7.8)). Valid for every shape, because the body-frame box holds
+/// the whole body; it is loose when the shape does not fill its box (a sphere: up to
+/// a factor sqrt(D) on a side). An empty body-frame box stays empty. \ref ch07
+template <int D>
+Aabb<D> worldBounds(const Shape<D>& shape, const Pose<D>& pose) {
+  return detail::worldBoundsWithMatrix<D>(shape, pose, rotationMatrix<D>(pose.orientation));
 }
 // [world_bounds]
 

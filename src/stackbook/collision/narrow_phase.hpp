@@ -399,8 +399,8 @@ void appendSamplesInside(const CollisionBody<D>& owner, int ownerIndex,
   const Shape<D>& shapeB = *penetrated.shape;
   const Aabb<D> boxB = shapeB.bounds().inflated(settings.cullMargin);
   // x_B = R_B^T (x_A + R_A s - x_B) = M s + t: one matrix for all samples (Eq. (7.2)).
-  const Mat<D> RA = rotationMatrix<D>(owner.pose.orientation);
-  const Mat<D> RB = rotationMatrix<D>(penetrated.pose.orientation);
+  const Mat<D> RA = owner.poseRotation();
+  const Mat<D> RB = penetrated.poseRotation();
   const Mat<D> M = RB.transpose() * RA;
   const Vec<D> t = RB.transpose() * Vec<D>(owner.pose.position - penetrated.pose.position);
 
@@ -682,9 +682,9 @@ std::optional<InterferenceSample<D>> deepestApproachingInPair(
   }
   detail::checkPose<D>(a.pose, pair.first, "appendSamplesInside");
   detail::checkPose<D>(b.pose, pair.second, "appendSamplesInside");
-  // Each body's rotation matrix once per pair (pairInterference() builds each twice).
-  const Mat<D> Ra = rotationMatrix<D>(a.pose.orientation);
-  const Mat<D> Rb = rotationMatrix<D>(b.pose.orientation);
+  // Each body's rotation matrix once per pair, kept by the view (RotationCache).
+  const Mat<D> Ra = a.poseRotation();
+  const Mat<D> Rb = b.poseRotation();
   scratch.clear();
   detail::appendCandidatesInside<D>(a, Ra, b, Rb, pair.second, true, scratch, settings, counters,
                                     lists != nullptr ? &lists->firstInSecond : nullptr);

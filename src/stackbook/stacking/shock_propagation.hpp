@@ -248,7 +248,10 @@ void shockPropagationPass(World<D>& world, const ContactGraph& graph, const Cont
     if (isolated[l] != 0) continue;
     pairs.clear();
     for (const ContactPair& c : levels.pairs(l)) pairs.push_back(BodyPair{c.below, c.above});  // Eq. (9.2)
-    lists.assign(pairs.size(), PairCandidateLists<D>{});
+    // No list of the last level answers for this one: mark them all unmade, keeping the
+    // vectors' capacity (a level's lists are made again at its first sweep).
+    lists.resize(pairs.size());
+    for (PairCandidateLists<D>& kept : lists) kept.firstInSecond.made = kept.secondInFirst.made = false;
     // A sweep that applies no impulse ends the level: nothing approaches, and no later
     // sweep can find an approach, since restitution only scales an impulse (Eq. (8.5)).
     for (int s = 1; s <= shock.sweepsPerLevel && !pairs.empty(); ++s) {

@@ -197,12 +197,12 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
     // impulse moves it), so it is left alone: the views of static bodies stay constant
     // for the whole sweep, which is what lets islands run at the same time (chapter 10).
     if (!owner.isStatic()) {
-      views[static_cast<std::size_t>(s.owner)].pose =
-          testedPose<D>(world, s.owner, spec.lookahead, dt, settings.rotation);
+      views[static_cast<std::size_t>(s.owner)].setPose(
+          testedPose<D>(world, s.owner, spec.lookahead, dt, settings.rotation));
     }
     if (!other.isStatic()) {
-      views[static_cast<std::size_t>(s.other)].pose =
-          testedPose<D>(world, s.other, spec.lookahead, dt, settings.rotation);
+      views[static_cast<std::size_t>(s.other)].setPose(
+          testedPose<D>(world, s.other, spec.lookahead, dt, settings.rotation));
     }
     // [pair_converged]
     // The loop has converged when an impulse is a small fraction of the visit's first one
