@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -149,6 +150,81 @@ TEST_CASE("The islands of a sweep join pairs through dynamic bodies only, in the
   CHECK(split.pairs[4] == 5);
   CHECK(split.pairs[5] == 3);
 }
+
+// [test_pair_islands_definition]
+TEST_CASE("The islands of a sweep are the connected components of its pairs in any world and any order of calls") {
+  // The definition written out: breadth-first search over the dynamic bodies, islands
+  // numbered by their first pair in the list, pairs ascending within an island.
+  const auto reference = [](const World<2>& world, const std::vector<BodyPair>& pairs) {
+    const auto dynamic = [&world](int i) { return !world.bodies[static_cast<std::size_t>(i)].isStatic(); };
+    std::vector<int> islandOf(pairs.size(), -1);
+    int islands = 0;
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      if (islandOf[k] >= 0) continue;
+      const int id = islands++;
+      islandOf[k] = id;
+      std::vector<std::size_t> frontier{k};
+      while (!frontier.empty()) {
+        const BodyPair p = pairs[frontier.back()];
+        frontier.pop_back();
+        for (std::size_t m = 0; m < pairs.size(); ++m) {
+          if (islandOf[m] >= 0) continue;
+          const BodyPair q = pairs[m];
+          const bool shares = (dynamic(p.first) && (q.first == p.first || q.second == p.first)) ||
+                              (dynamic(p.second) && (q.first == p.second || q.second == p.second));
+          if (!shares) continue;
+          islandOf[m] = id;
+          frontier.push_back(m);
+        }
+      }
+    }
+    PairIslands out;
+    out.begin.assign(static_cast<std::size_t>(islands) + 1, 0);
+    for (int c = 0; c < islands; ++c) {
+      for (std::size_t k = 0; k < pairs.size(); ++k) {
+        if (islandOf[k] == c) out.pairs.push_back(k);
+      }
+      out.begin[static_cast<std::size_t>(c) + 1] = out.pairs.size();
+    }
+    return out;
+  };
+  const auto shape = std::make_shared<BoxShape<2>>(makeBoxShape<2>(Vec2(1.0, 1.0)));
+  std::mt19937 random(29);
+  int compared = 0, several = 0;
+  // Worlds of different sizes in turn, so that the per-thread table is reused, grown and
+  // used by a smaller world after a larger one.
+  for (const int n : {300, 40, 1200, 7, 300}) {
+    World<2> world;
+    for (int i = 0; i < n; ++i) {
+      if (random() % 5 == 0) {
+        world.addBody(makeStaticBody<2>(Vec2(0.0, 0.0)), shape);
+      } else {
+        world.addBody(makeDynamicBody<2>(1.0, AngVec<2>::Constant(1.0)), shape);
+      }
+    }
+    for (int trial = 0; trial < 40; ++trial) {
+      // Pairs among a random subset of the bodies, as a sweep or a level would have them.
+      const int span = 1 + static_cast<int>(random() % static_cast<unsigned>(n));
+      const int first = static_cast<int>(random() % static_cast<unsigned>(n - span + 1));
+      std::vector<BodyPair> pairs;
+      const int count = static_cast<int>(random() % 60);
+      for (int k = 0; k < count && span > 1; ++k) {
+        const int a = first + static_cast<int>(random() % static_cast<unsigned>(span));
+        const int b = first + static_cast<int>(random() % static_cast<unsigned>(span));
+        if (a != b) pairs.push_back(BodyPair{std::min(a, b), std::max(a, b)});
+      }
+      const PairIslands expected = reference(world, pairs);
+      const PairIslands got = pairIslands<2>(world, pairs);
+      CHECK(got.begin == expected.begin);
+      CHECK(got.pairs == expected.pairs);
+      ++compared;
+      if (expected.islandCount() > 1) ++several;
+    }
+  }
+  CHECK(compared == 200);
+  CHECK(several > 50);  // the trials split into islands, not only one
+}
+// [test_pair_islands_definition]
 
 TEST_CASE("A step is bit for bit the same for 1, 2 and 4 threads: many islands (2D)") {
   checkThreadCounts("many_pyramids_2d", 40);

@@ -33,12 +33,35 @@ struct PairIslands {
 /// Union-find over the dynamic bodies of `pairs` (Eq. (10.8)): two pairs share an island
 /// when a chain of pairs links them through dynamic bodies. A static body (1/m = 0 and
 /// I^{-1} = 0, which includes bodies frozen by shock propagation) joins nothing: impulses
-/// never change it. A pair of two static bodies is an island of its own. O(n + p).
+/// never change it. A pair of two static bodies is an island of its own. O(p) per call, for
+/// any number n of bodies in the world (O(n) once per thread for the table).
 template <int D>
 PairIslands pairIslands(const World<D>& world, const std::vector<BodyPair>& pairs) {
+  // The dynamic bodies the pairs touch get local numbers 0, 1, ... in order of first
+  // appearance, through a per-thread table of the world's size that is filled with -1 once
+  // and put back entry by entry, so that a sweep costs O(p) however many bodies the world
+  // has: the shock pass sweeps levels of a few pairs thousands of times per step.
   const std::size_t n = world.bodies.size();
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
+  thread_local std::vector<int> localOf;
+  if (localOf.size() < n) localOf.resize(n, -1);
+  std::vector<int> touched;  // local number -> body
+  struct PutBack {
+    std::vector<int>& table;
+    const std::vector<int>& bodies;
+    ~PutBack() {
+      for (const int b : bodies) table[static_cast<std::size_t>(b)] = -1;
+    }
+  } putBack{localOf, touched};
+  const auto dynamic = [&world](int i) { return !world.bodies[static_cast<std::size_t>(i)].isStatic(); };
+  const auto local = [&](int body) {
+    int& slot = localOf[static_cast<std::size_t>(body)];
+    if (slot < 0) {
+      slot = static_cast<int>(touched.size());
+      touched.push_back(body);
+    }
+    return slot;
+  };
+  std::vector<int> parent;  // union-find over local numbers
   const auto find = [&parent](int i) {
     while (parent[static_cast<std::size_t>(i)] != i) {
       int& p = parent[static_cast<std::size_t>(i)];
@@ -47,25 +70,31 @@ PairIslands pairIslands(const World<D>& world, const std::vector<BodyPair>& pair
     }
     return i;
   };
-  const auto dynamic = [&world](int i) { return !world.bodies[static_cast<std::size_t>(i)].isStatic(); };
-  for (const BodyPair& p : pairs) {
-    if (dynamic(p.first) && dynamic(p.second)) {
-      const int a = find(p.first), b = find(p.second);
-      if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+  std::vector<int> pairBody(pairs.size(), -1);  // a dynamic body of each pair, local; -1: none
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const BodyPair& p = pairs[k];
+    const bool first = dynamic(p.first), second = dynamic(p.second);
+    if (!first && !second) continue;
+    const int a = first ? local(p.first) : -1, b = second ? local(p.second) : -1;
+    if (parent.size() < touched.size()) {
+      for (std::size_t i = parent.size(); i < touched.size(); ++i) parent.push_back(static_cast<int>(i));
+    }
+    pairBody[k] = first ? a : b;
+    if (first && second) {
+      const int ra = find(a), rb = find(b);
+      if (ra != rb) parent[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
     }
   }
   // Island of each pair, numbered in order of first appearance in the list.
-  std::vector<int> islandOfRoot(n, -1);
+  std::vector<int> islandOfRoot(touched.size(), -1);
   std::vector<std::size_t> islandOfPair(pairs.size());
   std::size_t islands = 0;
   for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const BodyPair& p = pairs[k];
-    const int body = dynamic(p.first) ? p.first : (dynamic(p.second) ? p.second : -1);
-    if (body < 0) {
+    if (pairBody[k] < 0) {
       islandOfPair[k] = islands++;
       continue;
     }
-    int& island = islandOfRoot[static_cast<std::size_t>(find(body))];
+    int& island = islandOfRoot[static_cast<std::size_t>(find(pairBody[k]))];
     if (island < 0) island = static_cast<int>(islands++);
     islandOfPair[k] = static_cast<std::size_t>(island);
   }
