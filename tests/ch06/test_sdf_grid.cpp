@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <map>
 #include <string>
@@ -452,5 +453,47 @@ TEST_CASE("grid settings are checked by name") {
   CHECK_THROWS_WITH_AS(buildSdfGrid<3>(box, settings), doctest::Contains("maxNodes"),
                        std::invalid_argument);
 }
+
+// [test_written_out_gradient]
+TEST_CASE_TEMPLATE("the written-out central-difference gradient has the bits of the corner loop", Dim, In2D, In3D) {
+  constexpr int D = Dim::value;
+  // A wavy function, so that no node difference is special; a grid small enough that many
+  // points fall in edge cells, where the differences are one-sided.
+  const std::function<double(const Vec<D>&)> wavy = [](const Vec<D>& p) {
+    double v = p.norm() - 0.6;
+    for (int k = 0; k < D; ++k) v += 0.05 * std::sin(7.0 * p[k] + k);
+    return v;
+  };
+  SdfGridSettings settings;
+  settings.cellsAcrossLargestExtent = 6;
+  settings.gradient = SdfGradientMethod::CentralDifferences;
+  const SdfGrid<D> grid = sampleSdfGrid<D>(wavy, Aabb<D>{Vec<D>::Constant(-1.0), Vec<D>::Constant(1.0)}, settings);
+  const auto sameBits = [](const Vec<D>& a, const Vec<D>& b) {
+    return std::memcmp(a.data(), b.data(), sizeof(double) * D) == 0;
+  };
+  RandomSource random(83);
+  const Aabb<D>& box = grid.box();
+  int checked = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    Vec<D> x = randomIn<D>(random, box);
+    // Every fourth point on a node plane or a face of the box, where a corner or a cell edge
+    // is hit exactly.
+    if (trial % 4 == 1) x[trial % D] = grid.nodePosition(typename SdfGrid<D>::Index{})[trial % D] + grid.cellSize() * (trial % 7);
+    if (trial % 4 == 2) x[trial % D] = (trial % 8 < 4) ? box.lower[trial % D] : box.upper[trial % D];
+    x = x.cwiseMax(box.lower).cwiseMin(box.upper);
+    const Vec<D> loop = grid.gradientByCorners(x, SdfGradientMethod::CentralDifferences);
+    CHECK(sameBits(grid.gradient(x), loop));
+    ++checked;
+  }
+  CHECK(checked == 3000);
+  // The other method is the loop itself.
+  settings.gradient = SdfGradientMethod::InterpolantDerivative;
+  const SdfGrid<D> other = sampleSdfGrid<D>(wavy, Aabb<D>{Vec<D>::Constant(-1.0), Vec<D>::Constant(1.0)}, settings);
+  for (int trial = 0; trial < 100; ++trial) {
+    const Vec<D> x = randomIn<D>(random, other.box());
+    CHECK(sameBits(other.gradient(x), other.gradientByCorners(x, SdfGradientMethod::InterpolantDerivative)));
+  }
+}
+// [test_written_out_gradient]
 
 }  // TEST_SUITE

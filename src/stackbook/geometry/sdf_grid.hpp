@@ -127,6 +127,10 @@ class SdfGrid {
   /// Unit normal gradient/|gradient|. Where the gradient vanishes (on the medial axis, at
   /// the centre of a sphere) the other method's gradient, and failing that the last axis.
   Vec<D> normal(const Vec<D>& x) const;
+  /// The gradient inside the grid box by the loop over the cell's corners of Eq. (6.13), as
+  /// written in chapter 6. gradient() and normal() take a written-out form of the same sums
+  /// for central differences, with the same bits; this is the form they are tested against.
+  Vec<D> gradientByCorners(const Vec<D>& x, SdfGradientMethod method) const;
 
   /// The box the nodes span: [origin, origin + h (n - 1)].
   const Aabb<D>& box() const { return box_; }
@@ -161,6 +165,7 @@ class SdfGrid {
   double interpolate(const Vec<D>& x) const;
   Vec<D> gradientInside(const Vec<D>& x, SdfGradientMethod method) const;
   Vec<D> nodeGradient(const Index& i) const;
+  Vec<D> centralGradientInCell(const Index& cell, const Vec<D>& t) const;
 
   Vec<D> origin_ = Vec<D>::Zero();
   double h_ = 1.0;
