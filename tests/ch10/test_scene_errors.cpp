@@ -93,6 +93,8 @@ const std::vector<BadCase>& badCases() {
        "expected a string, got the boolean true"},
       {"pass flag not a boolean", R"({"solver": {"shock": {"replacesContactStage": 1}}})",
        "/solver/shock/replacesContactStage", "expected true or false, got the number 1"},
+      {"negative candidate reach", R"({"solver": {"candidateReach": -0.1}})", "/solver/candidateReach",
+       "must be >= 0, got -0.1"},
       {"zero normal cosine", R"({"solver": {"impulsePointNormalCosine": 0}})",
        "/solver/impulsePointNormalCosine", "must be > 0, got 0"},
       {"static body with a mass",

@@ -246,7 +246,8 @@ TEST_CASE("Solver and effect settings reach the step settings") {
     "solver": {"collisionIterations": 3, "contactIterations": 2, "contactRestitution": [-0.4, 0],
                "shock": {"sweepsPerLevel": 3, "pairIterations": 7, "replacesContactStage": true},
                "order": "traditional",
-               "impulsePoint": "centre", "impulsePointNormalCosine": 0.9, "frictionCone": "step"},
+               "impulsePoint": "centre", "impulsePointNormalCosine": 0.9, "frictionCone": "step",
+               "candidateReach": 0.2},
     "effects": {"friction": false, "shockPropagation": true},
     "bodies": [{"shape": {"type": "disk", "radius": 1}}]})");
   const Scene s = parseScene(doc, "s.json", ".");
@@ -260,6 +261,7 @@ TEST_CASE("Solver and effect settings reach the step settings") {
   CHECK(s.settings.impulsePoint.rule == ImpulsePointRule::DepthWeightedCentre);
   CHECK(s.settings.impulsePoint.normalCosine == 0.9);
   CHECK(s.settings.frictionCone == FrictionConeRule::StepTotal);
+  CHECK(s.settings.detection.narrow.candidateReach == 0.2);
   REQUIRE(s.settings.effects.friction.has_value());
   CHECK(*s.settings.effects.friction == false);
   CHECK(*s.settings.effects.shockPropagation == true);

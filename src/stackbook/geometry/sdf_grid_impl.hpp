@@ -73,7 +73,10 @@ void SdfGrid<D>::locate(const Vec<D>& x, Index& cell, Vec<D>& t) const {
   for (int k = 0; k < D; ++k) {
     const std::size_t kk = static_cast<std::size_t>(k);
     const double s = (x[k] - origin_[k]) / h_;
-    const int c = std::clamp(static_cast<int>(std::floor(s)), 0, n_[kk] - 2);
+    // For 0 <= s < 2^31 truncation is the floor (the only case a point of the grid box
+    // gives); anything else, a NaN included, takes the floor and the clamp.
+    const int c = s >= 0.0 && s < 2147483647.0 ? std::min(static_cast<int>(s), n_[kk] - 2)
+                                               : std::clamp(static_cast<int>(std::floor(s)), 0, n_[kk] - 2);
     cell[kk] = c;
     t[k] = std::clamp(s - c, 0.0, 1.0);
   }

@@ -123,7 +123,7 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
                   {"collisionIterations", "collisionPairIterations", "contactIterations",
                    "contactPairIterations", "contactRestitution", "shock", "order", "impulsePoint",
                    "impulsePointNormalCosine", "frictionCone", "rotation", "surfaceQuery", "threads", "sleep",
-                   "pairImpulseTolerance", "stageApproachTolerance", "preset"},
+                   "pairImpulseTolerance", "stageApproachTolerance", "candidateReach", "preset"},
                   "the solver settings");
   // A preset (chapter 9) sets several fields at once; it is applied first, so that the
   // scene's other solver fields change it.
@@ -158,6 +158,10 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
   }
   if (const json* v = member(solver, "stageApproachTolerance")) {
     s.stageApproachTolerance = r.nonNegative(*v, p + "/stageApproachTolerance");
+  }
+  // Candidate lists (chapter 7): exact for any reach, so this field changes time only.
+  if (const json* v = member(solver, "candidateReach")) {
+    s.detection.narrow.candidateReach = r.nonNegative(*v, p + "/candidateReach");
   }
   // A field that names one of two choices: "must be \"a\" or \"b\", got \"c\"" otherwise.
   const auto choose = [&](const char* field, const char* a, auto valueA, const char* b, auto valueB) {
