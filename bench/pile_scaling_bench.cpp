@@ -5,10 +5,12 @@
 // counters (impulses, signed-distance queries, narrow-phase pair queries), peak memory, and
 // the least-squares slope of log(cost) against log(N) for the time and for each counter.
 //
-//   pile_scaling_bench [--big | --n 50,100,...] [--steps M] [--reps R] [--cache DIR|--no-cache]
+//   pile_scaling_bench [--big | --n 50,100,...] [--steps M] [--reps R] [--threads T] [--cache DIR|--no-cache]
 //
 // Default N = 50, 100, 200 (forming them takes a few minutes the first time); --big adds 500
-// and 1000 (forming the 1000 pile simulates its 3.9 s of pouring). Build in Release.
+// and 1000 (forming the 1000 pile simulates its 3.9 s of pouring). --threads T times the steps
+// with T threads (0: every hardware thread; default: the scene's, every hardware thread); the
+// formed piles are the same for any T, so the cache serves every T. Build in Release.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -43,7 +45,7 @@ double logLogSlope(const std::vector<double>& x, const std::vector<double>& y) {
 }
 
 int usage(const char* program) {
-  std::fprintf(stderr, "usage: %s [--big | --n 50,100,...] [--steps M] [--reps R] [--cache DIR|--no-cache]\n", program);
+  std::fprintf(stderr, "usage: %s [--big | --n 50,100,...] [--steps M] [--reps R] [--threads T] [--cache DIR|--no-cache]\n", program);
   return 2;
 }
 
@@ -54,6 +56,7 @@ int main(int argc, char** argv) {
   long steps = 50;
   int reps = 2;
   std::string cache = "peers_bench_cache";
+  int threads = -1;  // the timed steps' thread count; -1: the scene's (every hardware thread)
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     const bool hasValue = i + 1 < argc;
@@ -67,6 +70,8 @@ int main(int argc, char** argv) {
       steps = std::atol(argv[++i]);
     } else if (arg == "--reps" && hasValue) {
       reps = std::atoi(argv[++i]);
+    } else if (arg == "--threads" && hasValue) {
+      threads = std::atoi(argv[++i]);
     } else if (arg == "--cache" && hasValue) {
       cache = argv[++i];
     } else if (arg == "--no-cache") {
@@ -75,11 +80,11 @@ int main(int argc, char** argv) {
       return usage(argv[0]);
     }
   }
-  if (sizes.empty() || steps < 1 || reps < 1) return usage(argv[0]);
+  if (sizes.empty() || steps < 1 || reps < 1 || threads < -1) return usage(argv[0]);
 
   std::printf("Formed 2D piles of N nonconvex bodies (L, U, star, bone), the scene's settings, dt 1 ms, %ld timed "
-              "steps, %d repetition(s)\n\n",
-              steps, reps);
+              "steps, %d repetition(s), %s\n\n",
+              steps, reps, threads < 0 ? "the scene's threads" : (std::to_string(threads) + " thread(s)").c_str());
   std::printf("| N | ms/step min | ms/step median | CPU ms/step median | impulses/step | phi queries/step | pair queries/step | max speed "
               "(m/s) | peak memory (MB) |\n|---|---|---|---|---|---|---|---|---|\n");
   std::vector<double> n, ms, cpu, impulses, phi, pairs;
@@ -88,6 +93,7 @@ int main(int argc, char** argv) {
     PileSpec pile;
     try {
       pile = pile2d(size, cache);
+      pile.timingThreads = threads;
     } catch (const std::exception& e) {
       std::fprintf(stderr, "pile_scaling_bench: N = %d: %s\n", size, e.what());
       return 2;

@@ -21,6 +21,9 @@ struct PileSpec {
   double formSeconds = 3.0;
   double settleSpeed = 0.05;
   std::string cacheDir;
+  /// Threads for the timed steps (-1: the scene's). Not part of the cache key: a step gives
+  /// the same bits for any thread count (chapter 10), so the formed state is the same.
+  int timingThreads = -1;
 };
 std::unique_ptr<Engine> makeStackbookPile(const PileSpec& pile, stackbook::SolverPreset preset);
 
