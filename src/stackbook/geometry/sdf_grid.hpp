@@ -165,6 +165,16 @@ class SdfGrid {
   double interpolate(const Vec<D>& x) const;
   Vec<D> gradientInside(const Vec<D>& x, SdfGradientMethod method) const;
   Vec<D> nodeGradient(const Index& i) const;
+  /// d phi / d x_k at the node of linear index `node`, whose coordinate along axis k is `at`:
+  /// the central difference, one-sided at the grid's edge (nodeGradient()'s component k).
+  double nodeDifference(std::int64_t node, int at, int k) const {
+    const std::size_t kk = static_cast<std::size_t>(k);
+    const bool first = at == 0, last = at == n_[kk] - 1;
+    const std::int64_t lo = first ? node : node - strides_[kk];
+    const std::int64_t hi = last ? node : node + strides_[kk];
+    return (values_[static_cast<std::size_t>(hi)] - values_[static_cast<std::size_t>(lo)]) /
+           (first || last ? h_ : 2.0 * h_);
+  }
   Vec<D> centralGradientInCell(const Index& cell, const Vec<D>& t) const;
 
   Vec<D> origin_ = Vec<D>::Zero();

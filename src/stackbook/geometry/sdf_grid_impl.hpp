@@ -154,13 +154,7 @@ template <int D>
 Vec<D> SdfGrid<D>::nodeGradient(const Index& i) const {
   const std::int64_t base = linear(i);
   Vec<D> g;
-  for (int k = 0; k < D; ++k) {
-    // Central difference, one-sided at the grid's edge.
-    const bool first = i[k] == 0, last = i[k] == n_[k] - 1;
-    const std::int64_t lo = first ? base : base - strides_[k];
-    const std::int64_t hi = last ? base : base + strides_[k];
-    g[k] = (values_[hi] - values_[lo]) / (first || last ? h_ : 2.0 * h_);
-  }
+  for (int k = 0; k < D; ++k) g[k] = nodeDifference(base, i[static_cast<std::size_t>(k)], k);
   return g;
 }
 
@@ -168,7 +162,8 @@ Vec<D> SdfGrid<D>::nodeGradient(const Index& i) const {
 /// central differences (one-sided at the grid's edge), interpolated like phi. Written out
 /// corner by corner with the corners' linear indices as the cell's plus the axis strides,
 /// so that no index is recomputed and no loop runs per corner; each weight is the product
-/// cornerWeight() forms, factor by factor, each difference and quotient is nodeGradient()'s,
+/// cornerWeight() forms, factor by factor, each difference and quotient is nodeGradient()'s
+/// (both take nodeDifference()),
 /// and the sum runs in the same corner order from zero, so the result has the same bits as
 /// the loop over the corners (the loop the other method still runs).
 template <int D>
@@ -176,23 +171,14 @@ Vec<D> SdfGrid<D>::centralGradientInCell(const Index& cell, const Vec<D>& t) con
   static_assert(D == 2 || D == 3);
   std::int64_t base = 0;
   for (int k = 0; k < D; ++k) base += strides_[static_cast<std::size_t>(k)] * cell[static_cast<std::size_t>(k)];
-  const double* v = values_.data();
-  // d phi / d x_k at the node with linear index `node` and coordinate `at` along axis k.
-  const auto difference = [&](std::int64_t node, int at, int k) {
-    const std::size_t kk = static_cast<std::size_t>(k);
-    const bool first = at == 0, last = at == n_[kk] - 1;
-    const std::int64_t lo = first ? node : node - strides_[kk];
-    const std::int64_t hi = last ? node : node + strides_[kk];
-    return (v[hi] - v[lo]) / (first || last ? h_ : 2.0 * h_);
-  };
   Vec<D> g = Vec<D>::Zero();
   const double u0 = 1.0 - t[0], u1 = 1.0 - t[1];
   if constexpr (D == 2) {
     const std::int64_t s1 = strides_[1];
     const int c0 = cell[0], c1 = cell[1];
     const auto add = [&](double w, std::int64_t node, int a0, int a1) {
-      g[0] += w * difference(node, a0, 0);
-      g[1] += w * difference(node, a1, 1);
+      g[0] += w * nodeDifference(node, a0, 0);
+      g[1] += w * nodeDifference(node, a1, 1);
     };
     add(1.0 * u0 * u1, base, c0, c1);                   // corner 00
     add(1.0 * t[0] * u1, base + 1, c0 + 1, c1);         // corner 10 (bit 0 set)
@@ -203,9 +189,9 @@ Vec<D> SdfGrid<D>::centralGradientInCell(const Index& cell, const Vec<D>& t) con
     const int c0 = cell[0], c1 = cell[1], c2 = cell[2];
     const double u2 = 1.0 - t[2];
     const auto add = [&](double w, std::int64_t node, int a0, int a1, int a2) {
-      g[0] += w * difference(node, a0, 0);
-      g[1] += w * difference(node, a1, 1);
-      g[2] += w * difference(node, a2, 2);
+      g[0] += w * nodeDifference(node, a0, 0);
+      g[1] += w * nodeDifference(node, a1, 1);
+      g[2] += w * nodeDifference(node, a2, 2);
     };
     add(1.0 * u0 * u1 * u2, base, c0, c1, c2);
     add(1.0 * t[0] * u1 * u2, base + 1, c0 + 1, c1, c2);
