@@ -258,6 +258,9 @@ int main(int argc, char** argv) {
     } else {
       const PileSpec& p = e.pile;
       add("stackbook", false, [p] { return makeStackbookPile(p, stackbook::SolverPreset::Gbf); });
+      PileSpec coloured = p;  // GBF's step, sweeps colour by colour (chapter 10, "Colours")
+      coloured.timingPairOrder = stackbook::PairOrder::Colours;
+      add("stackbook colours", false, [coloured] { return makeStackbookPile(coloured, stackbook::SolverPreset::Gbf); });
       if (pilePass) add("stackbook pass", false, [p] { return makeStackbookPile(p, stackbook::SolverPreset::PassAsContact); });
       if (pilePass) add("stackbook short", false, [p] { return makeStackbookPile(p, stackbook::SolverPreset::PassAsContactShortLoops); });
     }

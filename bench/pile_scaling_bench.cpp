@@ -5,12 +5,13 @@
 // counters (impulses, signed-distance queries, narrow-phase pair queries), peak memory, and
 // the least-squares slope of log(cost) against log(N) for the time and for each counter.
 //
-//   pile_scaling_bench [--big | --n 50,100,...] [--steps M] [--reps R] [--threads T] [--cache DIR|--no-cache]
+//   pile_scaling_bench [--big | --n 50,100,...] [--steps M] [--reps R] [--threads T] [--colours] [--cache DIR|--no-cache]
 //
 // Default N = 50, 100, 200 (forming them takes a few minutes the first time); --big adds 500
 // and 1000 (forming the 1000 pile simulates its 3.9 s of pouring). --threads T times the steps
 // with T threads (0: every hardware thread; default: the scene's, every hardware thread); the
-// formed piles are the same for any T, so the cache serves every T. Build in Release.
+// formed piles are the same for any T, so the cache serves every T. --colours times them with
+// the sweeps colour by colour (chapter 10, "Colours"; the same formed piles). Build in Release.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -45,7 +46,7 @@ double logLogSlope(const std::vector<double>& x, const std::vector<double>& y) {
 }
 
 int usage(const char* program) {
-  std::fprintf(stderr, "usage: %s [--big | --n 50,100,...] [--steps M] [--reps R] [--threads T] [--cache DIR|--no-cache]\n", program);
+  std::fprintf(stderr, "usage: %s [--big | --n 50,100,...] [--steps M] [--reps R] [--threads T] [--colours] [--cache DIR|--no-cache]\n", program);
   return 2;
 }
 
@@ -57,6 +58,7 @@ int main(int argc, char** argv) {
   int reps = 2;
   std::string cache = "peers_bench_cache";
   int threads = -1;  // the timed steps' thread count; -1: the scene's (every hardware thread)
+  bool colours = false;  // the timed steps' sweeps colour by colour
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     const bool hasValue = i + 1 < argc;
@@ -72,6 +74,8 @@ int main(int argc, char** argv) {
       reps = std::atoi(argv[++i]);
     } else if (arg == "--threads" && hasValue) {
       threads = std::atoi(argv[++i]);
+    } else if (arg == "--colours") {
+      colours = true;
     } else if (arg == "--cache" && hasValue) {
       cache = argv[++i];
     } else if (arg == "--no-cache") {
@@ -83,8 +87,9 @@ int main(int argc, char** argv) {
   if (sizes.empty() || steps < 1 || reps < 1 || threads < -1) return usage(argv[0]);
 
   std::printf("Formed 2D piles of N nonconvex bodies (L, U, star, bone), the scene's settings, dt 1 ms, %ld timed "
-              "steps, %d repetition(s), %s\n\n",
-              steps, reps, threads < 0 ? "the scene's threads" : (std::to_string(threads) + " thread(s)").c_str());
+              "steps, %d repetition(s), %s%s\n\n",
+              steps, reps, threads < 0 ? "the scene's threads" : (std::to_string(threads) + " thread(s)").c_str(),
+              colours ? ", sweeps colour by colour" : "");
   std::printf("| N | ms/step min | ms/step median | CPU ms/step median | impulses/step | phi queries/step | pair queries/step | max speed "
               "(m/s) | peak memory (MB) |\n|---|---|---|---|---|---|---|---|---|\n");
   std::vector<double> n, ms, cpu, impulses, phi, pairs;
@@ -94,6 +99,7 @@ int main(int argc, char** argv) {
     try {
       pile = pile2d(size, cache);
       pile.timingThreads = threads;
+      if (colours) pile.timingPairOrder = stackbook::PairOrder::Colours;
     } catch (const std::exception& e) {
       std::fprintf(stderr, "pile_scaling_bench: N = %d: %s\n", size, e.what());
       return 2;

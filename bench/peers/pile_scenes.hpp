@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "stackbook/peers/engine.hpp"
+#include "stackbook/stepping/step_settings.hpp"
 
 namespace peers {
 
@@ -24,6 +25,9 @@ struct PileSpec {
   /// Threads for the timed steps (-1: the scene's). Not part of the cache key: a step gives
   /// the same bits for any thread count (chapter 10), so the formed state is the same.
   int timingThreads = -1;
+  /// The order of the timed steps' sweeps (chapter 10, "Colours"). Not part of the cache key
+  /// either: the pile forms under the scene's own settings, the same for every order.
+  stackbook::PairOrder timingPairOrder = stackbook::PairOrder::List;
 };
 std::unique_ptr<Engine> makeStackbookPile(const PileSpec& pile, stackbook::SolverPreset preset);
 

@@ -44,6 +44,7 @@ class StackbookPile final : public Engine {
     const StepSettings formSettings = scene.settings;
     settings_ = stackbook::applySolverPreset(preset, scene.settings);
     if (pile.timingThreads >= 0) settings_.parallel.threads = pile.timingThreads;
+    settings_.pairOrder = pile.timingPairOrder;
     halfDiagonal_.resize(world_.bodies.size());
     for (std::size_t i = 0; i < world_.bodies.size(); ++i) {
       const Aabb<D> box = world_.shapes[i]->bounds();

@@ -1,5 +1,6 @@
-// Chapter 10, "Threads": the islands of a sweep, and the step bit for bit the same for 1, 2
-// and 4 threads on bundled scenes (exact state bits and every work counter after N steps),
+// Chapter 10, "Threads" and "Colours": the islands and the colours of a sweep, and the step
+// bit for bit the same for 1, 2 and 4 threads on bundled scenes, in list order and colour by
+// colour (exact state bits and every work counter after N steps),
 // with GBF's contact stage, with the pass as the contact stage and one cone per step (the
 // contact ledger shared by the islands), with the loop tolerances, the implicit midpoint
 // rotation, exact deepest points, and with sleeping on.
@@ -10,11 +11,13 @@
 #include <functional>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "stackbook/geometry/analytic_sdf.hpp"
 #include "stackbook/scene/scene.hpp"
 #include "stackbook/stacking/shock_propagation.hpp"
+#include "stackbook/stepping/pair_colours.hpp"
 #include "stackbook/stepping/pair_islands.hpp"
 #include "stackbook/stepping/traditional_step.hpp"
 
@@ -314,6 +317,162 @@ TEST_CASE("A contact recorder receives the same impulses in the same order for 1
            a.normal == b.normal && a.impulse == b.impulse;
   }
   CHECK(same);
+}
+
+// [test_pair_colours_definition]
+TEST_CASE("The colours of a sweep are the greedy colouring of its pairs in list order in any world") {
+  // The definition written out: pair k takes the smallest colour below 64 that no earlier
+  // pair sharing one of its dynamic bodies took; none free: the overflow class 64.
+  const auto reference = [](const World<2>& world, const std::vector<BodyPair>& pairs) {
+    const auto dynamic = [&world](int i) { return !world.bodies[static_cast<std::size_t>(i)].isStatic(); };
+    const auto shareDynamic = [&](const BodyPair& p, const BodyPair& q) {
+      for (const int b : {p.first, p.second}) {
+        if (dynamic(b) && (q.first == b || q.second == b)) return true;
+      }
+      return false;
+    };
+    std::vector<std::size_t> colourOf(pairs.size());
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      std::vector<bool> taken(65, false);
+      for (std::size_t m = 0; m < k; ++m) {
+        if (shareDynamic(pairs[k], pairs[m])) taken[colourOf[m]] = true;
+      }
+      std::size_t c = 0;
+      while (c < 64 && taken[c]) ++c;
+      colourOf[k] = c;
+    }
+    PairColours out;
+    out.begin.assign(66, 0);
+    for (std::size_t c = 0; c <= 64; ++c) {
+      for (std::size_t k = 0; k < pairs.size(); ++k) {
+        if (colourOf[k] == c) out.pairs.push_back(k);
+      }
+      out.begin[c + 1] = out.pairs.size();
+    }
+    return out;
+  };
+  const auto shape = std::make_shared<BoxShape<2>>(makeBoxShape<2>(Vec2(1.0, 1.0)));
+  std::mt19937 random(31);
+  int compared = 0, coloured = 0;
+  for (const int n : {300, 40, 1200, 7, 300}) {  // the per-thread table grown, reused, reused smaller
+    World<2> world;
+    for (int i = 0; i < n; ++i) {
+      if (random() % 5 == 0) {
+        world.addBody(makeStaticBody<2>(Vec2(0.0, 0.0)), shape);
+      } else {
+        world.addBody(makeDynamicBody<2>(1.0, AngVec<2>::Constant(1.0)), shape);
+      }
+    }
+    for (int trial = 0; trial < 40; ++trial) {
+      const int span = 1 + static_cast<int>(random() % static_cast<unsigned>(n));
+      const int first = static_cast<int>(random() % static_cast<unsigned>(n - span + 1));
+      std::vector<BodyPair> pairs;
+      const int count = static_cast<int>(random() % 60);
+      for (int k = 0; k < count && span > 1; ++k) {
+        const int a = first + static_cast<int>(random() % static_cast<unsigned>(span));
+        const int b = first + static_cast<int>(random() % static_cast<unsigned>(span));
+        if (a != b) pairs.push_back(BodyPair{std::min(a, b), std::max(a, b)});
+      }
+      const PairColours expected = reference(world, pairs);
+      const PairColours got = pairColours<2>(world, pairs);
+      CHECK(got.begin == expected.begin);
+      CHECK(got.pairs == expected.pairs);
+      ++compared;
+      if (expected.size(1) > 0) ++coloured;
+    }
+  }
+  CHECK(compared == 200);
+  CHECK(coloured > 50);  // the trials needed a second colour, not only one
+  // 70 pairs of one dynamic body: 64 colours of one pair each, then the overflow class of 6,
+  // whose pairs share that body and are swept in order on one thread.
+  World<2> star;
+  star.addBody(makeDynamicBody<2>(1.0, AngVec<2>::Constant(1.0)), shape);
+  std::vector<BodyPair> spokes;
+  for (int i = 1; i <= 70; ++i) {
+    star.addBody(makeDynamicBody<2>(1.0, AngVec<2>::Constant(1.0)), shape);
+    spokes.push_back(BodyPair{0, i});
+  }
+  const PairColours full = pairColours<2>(star, spokes);
+  REQUIRE(full.classCount() == 65);
+  for (std::size_t c = 0; c < 64; ++c) CHECK(full.size(c) == 1);
+  CHECK(full.size(64) == 6);
+  CHECK_FALSE(full.independent(64));
+  CHECK(full.pairs[64] == 64);
+}
+// [test_pair_colours_definition]
+
+// [test_colours_sweep_order]
+TEST_CASE("A sweep colour by colour is the list-order sweep of its pairs in colour order, on any thread count") {
+  // Four boxes in a column on the ground, falling into each other: every pair of the chain
+  // shares a dynamic body with the next, so the chain is one island. The colours are
+  // {ground-1, 2-3} and {1-2, 3-4}.
+  const auto shape = std::make_shared<BoxShape<2>>(makeBoxShape<2>(Vec2(1.0, 1.0)));
+  World<2> start;
+  start.addBody(makeStaticBody<2>(Vec2(0.0, -0.5)), std::make_shared<BoxShape<2>>(makeBoxShape<2>(Vec2(8.0, 1.0))));
+  for (int i = 0; i < 4; ++i) {
+    RigidBody<2> box = makeDynamicBody<2>(1.0, AngVec<2>::Constant(1.0 / 6.0));
+    box.position = Vec2(0.05 * i, 0.499 + 0.999 * i);
+    box.orientation = Orientation<2>(0.02 * (i % 2 == 0 ? 1 : -1));
+    box.velocity = Vec2(0.1 * i, -1.0 - 0.5 * i);
+    start.addBody(box, shape);
+  }
+  const std::vector<BodyPair> chain{{0, 1}, {1, 2}, {2, 3}, {3, 4}};
+  const PairColours colours = pairColours<2>(start, chain);
+  REQUIRE(colours.size(0) == 2);
+  REQUIRE(colours.size(1) == 2);
+  std::vector<BodyPair> reordered;
+  for (const std::size_t p : colours.pairs) reordered.push_back(chain[p]);
+  CHECK(reordered == std::vector<BodyPair>{{0, 1}, {2, 3}, {1, 2}, {3, 4}});
+  const auto sweepOnce = [&start](const std::vector<BodyPair>& pairs, PairOrder order, int threads) {
+    World<2> world = start;
+    StepSettings settings;
+    settings.pairOrder = order;
+    settings.parallel.threads = threads;
+    settings.parallel.minPairs = 2;  // a colour of two pairs splits
+    std::vector<CollisionBody<2>> views = stageViews<2>(world, Lookahead::Velocity, settings.dt);
+    const StageSpec spec{Lookahead::Velocity, 1, 20, [](int, const PairMaterial&) { return 0.0; }};
+    StageCounters counters;
+    const int applied = sweepPairs<2>(world, views, pairs, spec, 1, settings.dt, settings, counters);
+    return std::make_tuple(threadsStateHash<2>(world), applied, counters.islandSweeps);
+  };
+  const auto [serial, serialImpulses, serialSplits] = sweepOnce(reordered, PairOrder::List, 1);
+  CHECK(serialImpulses > 4);
+  CHECK(serialSplits == 0);
+  for (const int threads : {1, 2, 4}) {
+    CAPTURE(threads);
+    const auto [hash, impulses, splits] = sweepOnce(chain, PairOrder::Colours, threads);
+    CHECK(hash == serial);
+    CHECK(impulses == serialImpulses);
+    CHECK((splits > 0) == (threads > 1));
+  }
+  // The list order itself is another Gauss-Seidel order, with another result.
+  CHECK(std::get<0>(sweepOnce(chain, PairOrder::List, 1)) != serial);
+}
+// [test_colours_sweep_order]
+
+TEST_CASE("A step colour by colour is bit for bit the same for 1, 2 and 4 threads, in one island too") {
+  // One island: the bin of shapes and the pyramid of base 20 (the pass's levels), where
+  // islands leave one thread all the work; many islands: the four pyramids.
+  checkThreadCounts("shapes_in_bin_2d", 300, {"solver.pairOrder=\"colours\""});
+  checkThreadCounts("many_pyramids_2d", 30, {"solver.pairOrder=\"colours\""});
+  checkThreadCounts("pyramid_20_2d", 10, {"solver.pairOrder=\"colours\""});
+  checkThreadCounts("rings_on_pegs_3d", 300, {"solver.pairOrder=\"colours\""});
+}
+
+TEST_CASE("The scene field solver.pairOrder reaches the step settings and changes the result, bad values get one line") {
+  const std::string file = std::string(STACKBOOK_SCENES_DIR) + "/many_pyramids_2d.json";  // in contact from the start
+  CHECK(loadScene(file).settings.pairOrder == PairOrder::List);
+  CHECK(loadScene(file, {"solver.pairOrder=\"list\""}).settings.pairOrder == PairOrder::List);
+  const Scene coloured = loadScene(file, {"solver.pairOrder=\"colours\""});
+  CHECK(coloured.settings.pairOrder == PairOrder::Colours);
+  StepSettings one = coloured.settings;
+  one.parallel.threads = 1;
+  StepSettings list = one;
+  list.pairOrder = PairOrder::List;
+  CHECK(threadsRun<2>(coloured, one, 10).hash != threadsRun<2>(coloured, list, 10).hash);
+  CHECK_THROWS_WITH_AS(loadScene(file, {"solver.pairOrder=\"rainbow\""}),
+                       doctest::Contains("/solver/pairOrder: must be \"list\" or \"colours\", got \"rainbow\""),
+                       SceneError);
 }
 
 }  // TEST_SUITE

@@ -123,7 +123,7 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
                   {"collisionIterations", "collisionPairIterations", "contactIterations",
                    "contactPairIterations", "contactRestitution", "shock", "order", "impulsePoint",
                    "impulsePointNormalCosine", "frictionCone", "rotation", "surfaceQuery", "threads", "sleep",
-                   "pairImpulseTolerance", "stageApproachTolerance", "candidateReach", "preset"},
+                   "pairImpulseTolerance", "stageApproachTolerance", "candidateReach", "pairOrder", "preset"},
                   "the solver settings");
   // A preset (chapter 9) sets several fields at once; it is applied first, so that the
   // scene's other solver fields change it.
@@ -187,6 +187,10 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
   if (member(solver, "surfaceQuery")) {
     s.detection.narrow.surfaceQuery =
         choose("surfaceQuery", "samples", SurfaceQuery::Samples, "deepestPoint", SurfaceQuery::DeepestPoint);
+  }
+  // The order of a sweep's pairs (chapter 10, "Colours"): unlike threads, it changes the result.
+  if (member(solver, "pairOrder")) {
+    s.pairOrder = choose("pairOrder", "list", PairOrder::List, "colours", PairOrder::Colours);
   }
   if (member(solver, "frictionCone")) {
     s.frictionCone = choose("frictionCone", "impulse", FrictionConeRule::EachImpulse, "step",

@@ -26,6 +26,7 @@
 #include "stackbook/impulse/rolling_friction.hpp"
 #include "stackbook/stepping/contact_ledger.hpp"
 #include "stackbook/stepping/contact_recorder.hpp"
+#include "stackbook/stepping/pair_colours.hpp"
 #include "stackbook/stepping/pair_islands.hpp"
 #include "stackbook/stepping/parallel.hpp"
 #include "stackbook/stepping/step_counters.hpp"
@@ -230,7 +231,7 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
 template <int D>
 std::vector<CollisionBody<D>> stageViews(const World<D>& world, Lookahead lookahead, double dt,
                                          RotationUpdate rotation = RotationUpdate::ExponentialMap,
-                                         const ParallelSettings& parallel = {1, 16, 256}) {
+                                         const ParallelSettings& parallel = {1, 16, 256, 4}) {
   std::vector<CollisionBody<D>> views(world.bodies.size());
   parallelFor(parallel.threads, views.size(), static_cast<std::size_t>(parallel.bodiesPerTask),
               [&](std::size_t begin, std::size_t end) {
@@ -330,6 +331,44 @@ int sweepIslands(World<D>& world, std::vector<CollisionBody<D>>& views,
 }
 // [sweep_islands]
 
+// [sweep_colours]
+/// One sweep colour by colour (PairOrder::Colours): the classes of `colours` in turn, each in
+/// list order. A colour of at least settings.parallel.minPairs pairs is cut into `threads`
+/// times parallel.runsPerThread runs of consecutive pairs that sweepIslands() runs at the same time: its pairs share no
+/// dynamic body, so any split gives the serial colour's result (Eq. (10.8) holds for them
+/// as for islands). The overflow class, whose pairs may share bodies, runs in order.
+template <int D>
+int sweepColours(World<D>& world, std::vector<CollisionBody<D>>& views, const std::vector<BodyPair>& pairs,
+                 const PairColours& colours, const StageSpec& spec, int sweep, double dt,
+                 const StepSettings& settings, StageCounters& counters, int threads,
+                 std::vector<PairCandidateLists<D>>* lists) {
+  const std::size_t minPairs = static_cast<std::size_t>(std::max(settings.parallel.minPairs, 2));
+  int applied = 0;
+  PairIslands runs;
+  for (std::size_t c = 0; c < colours.classCount(); ++c) {
+    const std::size_t n = colours.size(c);
+    const std::size_t first = colours.begin[c];
+    if (threads > 1 && colours.independent(c) && n >= minPairs) {
+      const std::size_t perThread = static_cast<std::size_t>(std::max(settings.parallel.runsPerThread, 1));
+      const std::size_t parts = std::min(n, static_cast<std::size_t>(threads) * perThread);
+      runs.pairs.assign(colours.pairs.begin() + static_cast<std::ptrdiff_t>(first),
+                        colours.pairs.begin() + static_cast<std::ptrdiff_t>(first + n));
+      runs.begin.resize(parts + 1);
+      for (std::size_t r = 0; r <= parts; ++r) runs.begin[r] = r * n / parts;
+      applied += sweepIslands<D>(world, views, pairs, runs, spec, sweep, dt, settings, counters, threads, lists);
+      continue;
+    }
+    for (std::size_t i = first; i < first + n; ++i) {
+      const std::size_t p = colours.pairs[i];
+      ++counters.pairVisits;
+      applied += resolvePair<D>(world, views, pairs[p], spec, sweep, dt, settings, counters,
+                                lists != nullptr ? &(*lists)[p] : nullptr);
+    }
+  }
+  return applied;
+}
+// [sweep_colours]
+
 // [sweep_pairs]
 /// One sweep over a given list of pairs: resolvePair() on each, in list order. Returns
 /// the number of impulses applied. Chapter 9's shock propagation sweeps each level's
@@ -345,6 +384,10 @@ int sweepPairs(World<D>& world, std::vector<CollisionBody<D>>& views,
   ++counters.sweeps;
   if (lists != nullptr && lists->size() != pairs.size()) lists->resize(pairs.size());
   const int threads = resolvedThreadCount(settings.parallel.threads);
+  if (settings.pairOrder == PairOrder::Colours && pairs.size() > 1) {
+    return sweepColours<D>(world, views, pairs, pairColours<D>(world, pairs), spec, sweep, dt, settings,
+                           counters, threads, lists);
+  }
   if (threads > 1 && pairs.size() >= static_cast<std::size_t>(std::max(settings.parallel.minPairs, 2))) {
     const PairIslands islands = pairIslands<D>(world, pairs);
     if (islands.islandCount() > 1) {

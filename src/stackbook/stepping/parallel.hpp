@@ -21,6 +21,9 @@ struct ParallelSettings {
   /// Per-body loops (stage views, velocity and position updates) hand each thread at
   /// least this many bodies.
   int bodiesPerTask = 256;
+  /// Under PairOrder::Colours, a colour of at least minPairs pairs is cut into this many
+  /// runs per thread, so that a thread that finishes early takes another run (>= 1).
+  int runsPerThread = 4;
 };
 // [parallel_settings]
 

@@ -30,6 +30,20 @@ enum class StepOrder {
   Traditional,
 };
 
+// [pair_order]
+/// The order in which a sweep visits its pairs (chapter 10, "Colours").
+enum class PairOrder {
+  /// The sweep's list order (GBF; the default): the broad phase's sorted (i, j) order in the
+  /// collision and contact stages, the contact graph's order in a level of the pass.
+  List,
+  /// Colour by colour (pairColours(), Eq. (10.10)), each colour in list order. No two pairs
+  /// of a colour share a dynamic body, so a colour's pairs may run at the same time even in
+  /// one island. A different Gauss-Seidel order, so a different result from List; the same
+  /// result for any thread count.
+  Colours,
+};
+// [pair_order]
+
 // [gbf_friction]
 /// The friction settings the step uses by default: chapter 3's safeguards with GBF's
 /// slip direction T = u_t / |u_t| (SlipDirectionRule::RelativeVelocity), the paper's rule.
@@ -139,6 +153,10 @@ struct StepSettings {
   /// Threads (chapter 10): how many, and how the work is split. The result is bit for bit
   /// the same for any thread count.
   ParallelSettings parallel;
+  /// The order of every sweep's pairs: the list's (GBF, the default) or colour by colour,
+  /// which lets threads share one island (chapter 10, "Colours"). Unlike `parallel`, this
+  /// setting changes the result.
+  PairOrder pairOrder = PairOrder::List;
   /// Sleeping (chapter 8): off by default.
   SleepSettings sleep;
 
@@ -187,6 +205,8 @@ inline void validateStepSettings(const StepSettings& s, const char* caller = "va
     msg << "parallel.minPairs must be >= 0, got " << s.parallel.minPairs;
   } else if (s.parallel.bodiesPerTask < 1) {
     msg << "parallel.bodiesPerTask must be >= 1, got " << s.parallel.bodiesPerTask;
+  } else if (s.parallel.runsPerThread < 1) {
+    msg << "parallel.runsPerThread must be >= 1, got " << s.parallel.runsPerThread;
   } else if (!s.shock.restitution.empty() &&
              s.shock.restitution.size() != static_cast<std::size_t>(s.shock.sweepsPerLevel)) {
     msg << "shock.restitution must be empty or hold sweepsPerLevel = " << s.shock.sweepsPerLevel
