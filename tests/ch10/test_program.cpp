@@ -84,6 +84,7 @@ TEST_CASE("stackbook run writes the trajectory and the animation and the summary
   CHECK(s.at("files").size() == 4);  // trajectory.csv, energy.csv, animation.svg, summary.json
   CHECK(lines(slurp(out / "energy.csv")) == 1 + 3);
   CHECK(s.at("effects") == nlohmann::json{"gravity", "collision", "contact", "friction"});
+  CHECK(s.at("pairOrder") == "list");  // the default; a scene's "colours" is said (below)
   // trajectory.csv: a header and 3 frames of 4 bodies.
   CHECK(lines(slurp(out / "trajectory.csv")) == 1 + 3 * 4);
 }
@@ -98,6 +99,7 @@ TEST_CASE("stackbook run of a 3D scene writes the glTF animation and its viewer 
   CHECK_FALSE(fs::exists(out / "animation.svg"));
   const nlohmann::json s = nlohmann::json::parse(slurp(out / "summary.json"));
   CHECK(s.at("steps") == 5);
+  CHECK(s.at("pairOrder") == "list");
   CHECK(s.at("dt") == 0.002);
   CHECK(s.at("files").size() == 5);  // trajectory.csv, energy.csv, animation.glb, viewer.html, summary.json
 }
@@ -111,6 +113,13 @@ TEST_CASE("stackbook run prints the summary with effects and stages and energy a
                            "summary.json"}) {
     CHECK_MESSAGE(o.out.find(part) != std::string::npos, part);
   }
+  CHECK(o.out.find("colour by colour") == std::string::npos);  // the list order is not announced
+  // The colour order (chapter 10, "Colours") changes the result, so the summary says so.
+  const Outcome coloured = run("run bouncing_balls_2d --duration 0.01 --threads 2 --set 'solver.pairOrder=\"colours\"' --out '" +
+                               out.string() + "'");
+  CHECK(coloured.code == kExitOk);
+  CHECK(coloured.out.find("pairs swept colour by colour on 2 thread(s)") != std::string::npos);
+  CHECK(nlohmann::json::parse(slurp(out / "summary.json")).at("pairOrder") == "colours");
 }
 
 TEST_CASE("stackbook list names every bundled scene with its description") {

@@ -182,6 +182,7 @@ json runSummaryJson(const Scene& scene, const SceneRun& run) {
               {"shockPropagation", stageJson(c.shock)},
               {"positionUpdate", {{"seconds", c.positionUpdateSeconds}}}}},
             {"threads", resolvedThreadCount(scene.settings.parallel.threads)},
+            {"pairOrder", scene.settings.pairOrder == PairOrder::Colours ? "colours" : "list"},
             {"sleep",
              {{"enabled", scene.settings.sleep.enabled},
               {"bodyStepsAsleep", c.sleep.sleepingBodySteps},
@@ -219,6 +220,9 @@ std::string runSummaryText(const json& s) {
         << " sliding), " << st.at("sweeps").get<std::int64_t>() << " sweeps, "
         << st.at("pairQueries").get<std::int64_t>() << " pair queries, " << st.at("phiQueries").get<std::int64_t>()
         << " phi queries\n";
+  }
+  if (s.at("pairOrder").get<std::string>() != "list") {  // chapter 10, "Colours": a different method, so said
+    out << "  pairs swept colour by colour on " << s.at("threads").get<int>() << " thread(s)\n";
   }
   out << "  velocity update " << s.at("stages").at("velocityUpdate").at("seconds").get<double>()
       << " s, position update " << s.at("stages").at("positionUpdate").at("seconds").get<double>() << " s\n";
