@@ -457,6 +457,39 @@ TEST_CASE("A step colour by colour is bit for bit the same for 1, 2 and 4 thread
   checkThreadCounts("many_pyramids_2d", 30, {"solver.pairOrder=\"colours\""});
   checkThreadCounts("pyramid_20_2d", 10, {"solver.pairOrder=\"colours\""});
   checkThreadCounts("rings_on_pegs_3d", 300, {"solver.pairOrder=\"colours\""});
+  // With the loop tolerances (which end some pair loops) and sleeping (whose sleepers are
+  // static to the colours of later sweeps).
+  const ThreadsOutcome tolerant = checkThreadCounts(
+      "many_pyramids_2d", 60, {"solver.pairOrder=\"colours\"", "solver.sleep.enabled=true", "solver.sleep.time=0.02"},
+      [](StepSettings& s) {
+        s.pairImpulseTolerance = 0.05;
+        s.stageApproachTolerance = 1e-4;
+      });
+  CHECK(tolerant.pairConvergences > 0);
+  CHECK(tolerant.fellAsleep > 0);
+  // A contact recorder gets the impulses in the serial colour order on two threads too.
+  const Scene scene = loadScene(std::string(STACKBOOK_SCENES_DIR) + "/many_pyramids_2d.json",
+                                {"solver.pairOrder=\"colours\""});
+  std::vector<ContactRecord> records[2];
+  for (const int threads : {1, 2}) {
+    ContactRecorder recorder;
+    StepSettings settings = scene.settings;
+    settings.parallel.threads = threads;
+    settings.parallel.minPairs = 2;
+    settings.contactRecorder = &recorder;
+    threadsRun<2>(scene, settings, 10);
+    records[threads - 1] = recorder.records();
+  }
+  REQUIRE(records[0].size() > 100);
+  REQUIRE(records[1].size() == records[0].size());
+  bool same = true;
+  for (std::size_t k = 0; k < records[0].size(); ++k) {
+    const ContactRecord& a = records[0][k];
+    const ContactRecord& b = records[1][k];
+    same = same && a.stage == b.stage && a.owner == b.owner && a.other == b.other && a.point == b.point &&
+           a.normal == b.normal && a.impulse == b.impulse;
+  }
+  CHECK(same);
 }
 
 TEST_CASE("The scene field solver.pairOrder reaches the step settings and changes the result, bad values get one line") {
