@@ -12,6 +12,7 @@
 #include <random>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "stackbook/geometry/analytic_sdf.hpp"
@@ -490,6 +491,20 @@ TEST_CASE("A step colour by colour is bit for bit the same for 1, 2 and 4 thread
            a.normal == b.normal && a.impulse == b.impulse;
   }
   CHECK(same);
+}
+
+TEST_CASE("Thread settings outside their ranges are rejected with the field name") {
+  const std::pair<void (*)(ParallelSettings&), const char*> bad[] = {
+      {[](ParallelSettings& p) { p.threads = -1; }, "parallel.threads must be >= 0"},
+      {[](ParallelSettings& p) { p.minPairs = -1; }, "parallel.minPairs must be >= 0"},
+      {[](ParallelSettings& p) { p.bodiesPerTask = 0; }, "parallel.bodiesPerTask must be >= 1"},
+      {[](ParallelSettings& p) { p.runsPerThread = 0; }, "parallel.runsPerThread must be >= 1, got 0"}};
+  for (const auto& [spoil, message] : bad) {
+    CAPTURE(message);
+    StepSettings s;
+    spoil(s.parallel);
+    CHECK_THROWS_WITH_AS(validateStepSettings(s, "test"), doctest::Contains(message), std::invalid_argument);
+  }
 }
 
 TEST_CASE("The scene field solver.pairOrder reaches the step settings and changes the result, bad values get one line") {

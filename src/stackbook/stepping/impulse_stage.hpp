@@ -334,9 +334,10 @@ int sweepIslands(World<D>& world, std::vector<CollisionBody<D>>& views,
 // [sweep_colours]
 /// One sweep colour by colour (PairOrder::Colours): the classes of `colours` in turn, each in
 /// list order. A colour of at least settings.parallel.minPairs pairs is cut into `threads`
-/// times parallel.runsPerThread runs of consecutive pairs that sweepIslands() runs at the same time: its pairs share no
-/// dynamic body, so any split gives the serial colour's result (Eq. (10.8) holds for them
-/// as for islands). The overflow class, whose pairs may share bodies, runs in order.
+/// times parallel.runsPerThread runs of consecutive pairs, which sweepIslands() runs at the
+/// same time: the colour's pairs share no dynamic body, so Eq. (10.8) holds for them pair by
+/// pair and any split gives the serial colour's result. The overflow class, whose pairs may
+/// share bodies, runs in order on this thread, as does every smaller colour.
 template <int D>
 int sweepColours(World<D>& world, std::vector<CollisionBody<D>>& views, const std::vector<BodyPair>& pairs,
                  const PairColours& colours, const StageSpec& spec, int sweep, double dt,
@@ -375,7 +376,8 @@ int sweepColours(World<D>& world, std::vector<CollisionBody<D>>& views, const st
 /// pairs with this, the stages below sweep the broad phase's pairs. With more than one
 /// thread (settings.parallel) and at least settings.parallel.minPairs pairs, the pairs'
 /// islands run at the same time (sweepIslands()), which performs the same floating-point
-/// operations on the same data as the loop below (chapter 10, Eq. (10.8)).
+/// operations on the same data as the loop below (chapter 10, Eq. (10.8)). Under
+/// PairOrder::Colours the sweep goes colour by colour instead (sweepColours(), Eq. (10.10)).
 template <int D>
 int sweepPairs(World<D>& world, std::vector<CollisionBody<D>>& views,
                const std::vector<BodyPair>& pairs, const StageSpec& spec, int sweep, double dt,
