@@ -97,6 +97,63 @@ ThreadsOutcome threadsRunScene(const Scene& scene, const StepSettings& settings,
   return scene.dimension == 2 ? threadsRun<2>(scene, settings, steps) : threadsRun<3>(scene, settings, steps);
 }
 
+/// Calls check(world, pairs) on 200 random lists of pairs, each among a random run of the
+/// bodies of one of five worlds of 300, 40, 1200, 7 and 300 bodies (a fifth of them static),
+/// as a sweep or a level would have them. The worlds come in turn, so that a per-thread table
+/// of the world's size is grown, reused, and used by a smaller world after a larger one.
+void threadsForRandomPairLists(unsigned seed,
+                               const std::function<void(const World<2>&, const std::vector<BodyPair>&)>& check) {
+  const auto shape = std::make_shared<BoxShape<2>>(makeBoxShape<2>(Vec2(1.0, 1.0)));
+  std::mt19937 random(seed);
+  for (const int n : {300, 40, 1200, 7, 300}) {
+    World<2> world;
+    for (int i = 0; i < n; ++i) {
+      if (random() % 5 == 0) {
+        world.addBody(makeStaticBody<2>(Vec2(0.0, 0.0)), shape);
+      } else {
+        world.addBody(makeDynamicBody<2>(1.0, AngVec<2>::Constant(1.0)), shape);
+      }
+    }
+    for (int trial = 0; trial < 40; ++trial) {
+      const int span = 1 + static_cast<int>(random() % static_cast<unsigned>(n));
+      const int first = static_cast<int>(random() % static_cast<unsigned>(n - span + 1));
+      std::vector<BodyPair> pairs;
+      const int count = static_cast<int>(random() % 60);
+      for (int k = 0; k < count && span > 1; ++k) {
+        const int a = first + static_cast<int>(random() % static_cast<unsigned>(span));
+        const int b = first + static_cast<int>(random() % static_cast<unsigned>(span));
+        if (a != b) pairs.push_back(BodyPair{std::min(a, b), std::max(a, b)});
+      }
+      check(world, pairs);
+    }
+  }
+}
+
+/// Runs 10 steps of `scene` with a contact recorder on 1 and on 2 threads (sweeps split from
+/// two pairs on) and checks that both recorded the same impulses in the same order.
+void threadsCheckSameRecords(const Scene& scene) {
+  std::vector<ContactRecord> records[2];
+  for (const int threads : {1, 2}) {
+    ContactRecorder recorder;
+    StepSettings settings = scene.settings;
+    settings.parallel.threads = threads;
+    settings.parallel.minPairs = 2;
+    settings.contactRecorder = &recorder;
+    threadsRun<2>(scene, settings, 10);
+    records[threads - 1] = recorder.records();
+  }
+  REQUIRE(records[0].size() > 100);
+  REQUIRE(records[1].size() == records[0].size());
+  bool same = true;
+  for (std::size_t k = 0; k < records[0].size(); ++k) {
+    const ContactRecord& a = records[0][k];
+    const ContactRecord& b = records[1][k];
+    same = same && a.stage == b.stage && a.owner == b.owner && a.other == b.other && a.point == b.point &&
+           a.normal == b.normal && a.impulse == b.impulse;
+  }
+  CHECK(same);
+}
+
 /// Runs `steps` steps of the bundled scene `name` with 1, 2 and 4 threads (islands split
 /// from two pairs on) and checks that the states and counters are identical, and that the
 /// runs with several threads did split sweeps into islands.
@@ -192,39 +249,15 @@ TEST_CASE("The islands of a sweep are the connected components of its pairs in a
     }
     return out;
   };
-  const auto shape = std::make_shared<BoxShape<2>>(makeBoxShape<2>(Vec2(1.0, 1.0)));
-  std::mt19937 random(29);
   int compared = 0, several = 0;
-  // Worlds of different sizes in turn, so that the per-thread table is reused, grown and
-  // used by a smaller world after a larger one.
-  for (const int n : {300, 40, 1200, 7, 300}) {
-    World<2> world;
-    for (int i = 0; i < n; ++i) {
-      if (random() % 5 == 0) {
-        world.addBody(makeStaticBody<2>(Vec2(0.0, 0.0)), shape);
-      } else {
-        world.addBody(makeDynamicBody<2>(1.0, AngVec<2>::Constant(1.0)), shape);
-      }
-    }
-    for (int trial = 0; trial < 40; ++trial) {
-      // Pairs among a random subset of the bodies, as a sweep or a level would have them.
-      const int span = 1 + static_cast<int>(random() % static_cast<unsigned>(n));
-      const int first = static_cast<int>(random() % static_cast<unsigned>(n - span + 1));
-      std::vector<BodyPair> pairs;
-      const int count = static_cast<int>(random() % 60);
-      for (int k = 0; k < count && span > 1; ++k) {
-        const int a = first + static_cast<int>(random() % static_cast<unsigned>(span));
-        const int b = first + static_cast<int>(random() % static_cast<unsigned>(span));
-        if (a != b) pairs.push_back(BodyPair{std::min(a, b), std::max(a, b)});
-      }
-      const PairIslands expected = reference(world, pairs);
-      const PairIslands got = pairIslands<2>(world, pairs);
-      CHECK(got.begin == expected.begin);
-      CHECK(got.pairs == expected.pairs);
-      ++compared;
-      if (expected.islandCount() > 1) ++several;
-    }
-  }
+  threadsForRandomPairLists(29, [&](const World<2>& world, const std::vector<BodyPair>& pairs) {
+    const PairIslands expected = reference(world, pairs);
+    const PairIslands got = pairIslands<2>(world, pairs);
+    CHECK(got.begin == expected.begin);
+    CHECK(got.pairs == expected.pairs);
+    ++compared;
+    if (expected.islandCount() > 1) ++several;
+  });
   CHECK(compared == 200);
   CHECK(several > 50);  // the trials split into islands, not only one
 }
@@ -298,26 +331,7 @@ TEST_CASE("The scene fields solver.threads and solver.sleep reach the step setti
 
 TEST_CASE("A contact recorder receives the same impulses in the same order for 1 and 2 threads") {
   const Scene scene = loadScene(std::string(STACKBOOK_SCENES_DIR) + "/many_pyramids_2d.json");
-  std::vector<ContactRecord> records[2];
-  for (const int threads : {1, 2}) {
-    ContactRecorder recorder;
-    StepSettings settings = scene.settings;
-    settings.parallel.threads = threads;
-    settings.parallel.minPairs = 2;
-    settings.contactRecorder = &recorder;
-    threadsRun<2>(scene, settings, 10);
-    records[threads - 1] = recorder.records();
-  }
-  REQUIRE(records[0].size() > 100);
-  REQUIRE(records[1].size() == records[0].size());
-  bool same = true;
-  for (std::size_t k = 0; k < records[0].size(); ++k) {
-    const ContactRecord& a = records[0][k];
-    const ContactRecord& b = records[1][k];
-    same = same && a.stage == b.stage && a.owner == b.owner && a.other == b.other && a.point == b.point &&
-           a.normal == b.normal && a.impulse == b.impulse;
-  }
-  CHECK(same);
+  threadsCheckSameRecords(scene);
 }
 
 // [test_pair_colours_definition]
@@ -353,35 +367,15 @@ TEST_CASE("The colours of a sweep are the greedy colouring of its pairs in list 
     return out;
   };
   const auto shape = std::make_shared<BoxShape<2>>(makeBoxShape<2>(Vec2(1.0, 1.0)));
-  std::mt19937 random(31);
   int compared = 0, coloured = 0;
-  for (const int n : {300, 40, 1200, 7, 300}) {  // the per-thread table grown, reused, reused smaller
-    World<2> world;
-    for (int i = 0; i < n; ++i) {
-      if (random() % 5 == 0) {
-        world.addBody(makeStaticBody<2>(Vec2(0.0, 0.0)), shape);
-      } else {
-        world.addBody(makeDynamicBody<2>(1.0, AngVec<2>::Constant(1.0)), shape);
-      }
-    }
-    for (int trial = 0; trial < 40; ++trial) {
-      const int span = 1 + static_cast<int>(random() % static_cast<unsigned>(n));
-      const int first = static_cast<int>(random() % static_cast<unsigned>(n - span + 1));
-      std::vector<BodyPair> pairs;
-      const int count = static_cast<int>(random() % 60);
-      for (int k = 0; k < count && span > 1; ++k) {
-        const int a = first + static_cast<int>(random() % static_cast<unsigned>(span));
-        const int b = first + static_cast<int>(random() % static_cast<unsigned>(span));
-        if (a != b) pairs.push_back(BodyPair{std::min(a, b), std::max(a, b)});
-      }
-      const PairColours expected = reference(world, pairs);
-      const PairColours got = pairColours<2>(world, pairs);
-      CHECK(got.begin == expected.begin);
-      CHECK(got.pairs == expected.pairs);
-      ++compared;
-      if (expected.size(1) > 0) ++coloured;
-    }
-  }
+  threadsForRandomPairLists(31, [&](const World<2>& world, const std::vector<BodyPair>& pairs) {
+    const PairColours expected = reference(world, pairs);
+    const PairColours got = pairColours<2>(world, pairs);
+    CHECK(got.begin == expected.begin);
+    CHECK(got.pairs == expected.pairs);
+    ++compared;
+    if (expected.size(1) > 0) ++coloured;
+  });
   CHECK(compared == 200);
   CHECK(coloured > 50);  // the trials needed a second colour, not only one
   // 70 pairs of one dynamic body: 64 colours of one pair each, then the overflow class of 6,
@@ -471,26 +465,7 @@ TEST_CASE("A step colour by colour is bit for bit the same for 1, 2 and 4 thread
   // A contact recorder gets the impulses in the serial colour order on two threads too.
   const Scene scene = loadScene(std::string(STACKBOOK_SCENES_DIR) + "/many_pyramids_2d.json",
                                 {"solver.pairOrder=\"colours\""});
-  std::vector<ContactRecord> records[2];
-  for (const int threads : {1, 2}) {
-    ContactRecorder recorder;
-    StepSettings settings = scene.settings;
-    settings.parallel.threads = threads;
-    settings.parallel.minPairs = 2;
-    settings.contactRecorder = &recorder;
-    threadsRun<2>(scene, settings, 10);
-    records[threads - 1] = recorder.records();
-  }
-  REQUIRE(records[0].size() > 100);
-  REQUIRE(records[1].size() == records[0].size());
-  bool same = true;
-  for (std::size_t k = 0; k < records[0].size(); ++k) {
-    const ContactRecord& a = records[0][k];
-    const ContactRecord& b = records[1][k];
-    same = same && a.stage == b.stage && a.owner == b.owner && a.other == b.other && a.point == b.point &&
-           a.normal == b.normal && a.impulse == b.impulse;
-  }
-  CHECK(same);
+  threadsCheckSameRecords(scene);
 }
 
 TEST_CASE("Thread settings outside their ranges are rejected with the field name") {
@@ -499,10 +474,11 @@ TEST_CASE("Thread settings outside their ranges are rejected with the field name
       {[](ParallelSettings& p) { p.minPairs = -1; }, "parallel.minPairs must be >= 0"},
       {[](ParallelSettings& p) { p.bodiesPerTask = 0; }, "parallel.bodiesPerTask must be >= 1"},
       {[](ParallelSettings& p) { p.runsPerThread = 0; }, "parallel.runsPerThread must be >= 1, got 0"}};
-  for (const auto& [spoil, message] : bad) {
+  for (const auto& entry : bad) {  // not a structured binding: CAPTURE's lambda takes it
+    const char* message = entry.second;
     CAPTURE(message);
     StepSettings s;
-    spoil(s.parallel);
+    entry.first(s.parallel);
     CHECK_THROWS_WITH_AS(validateStepSettings(s, "test"), doctest::Contains(message), std::invalid_argument);
   }
 }
