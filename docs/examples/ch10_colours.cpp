@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "stackbook/scene/scene.hpp"
+#include "stackbook/scene/simulation.hpp"
 #include "stackbook/stacking/shock_propagation.hpp"
 #include "stackbook/stepping/traditional_step.hpp"
 
@@ -48,8 +49,8 @@ ColoursOutcome run(const Scene& scene, PairOrder order, int threads, int steps) 
     if (b.isStatic()) continue;
     const Vec<D> d = b.position - start.bodies[i].position;
     out.drift = std::max(out.drift, (d - d.dot(up) * up).norm());
-    out.kinetic += 0.5 * b.velocity.squaredNorm() / b.inverseMass + 0.5 * b.angularMomentum.dot(b.angularVelocity);
   }
+  out.kinetic = worldEnergy<D>(world).kinetic;
   return out;
 }
 

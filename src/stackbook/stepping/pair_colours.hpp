@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "stackbook/collision/broad_phase.hpp"
+#include "stackbook/stepping/pair_islands.hpp"
 #include "stackbook/stepping/world.hpp"
 
 namespace stackbook {
@@ -52,8 +53,6 @@ PairColours pairColours(const World<D>& world, const std::vector<BodyPair>& pair
   } putBack{takenBy, touched};
   const auto dynamic = [&world](int i) { return !world.bodies[static_cast<std::size_t>(i)].isStatic(); };
   std::vector<std::size_t> colourOf(pairs.size());
-  PairColours out;
-  out.begin.assign(kOverflow + 2, 0);
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const int bodies[2] = {pairs[k].first, pairs[k].second};
     std::uint64_t taken = 0;
@@ -63,7 +62,6 @@ PairColours pairColours(const World<D>& world, const std::vector<BodyPair>& pair
     // The lowest colour free at both bodies; none free: the overflow class.
     const std::size_t c = taken == ~std::uint64_t{0} ? kOverflow : static_cast<std::size_t>(std::countr_one(taken));
     colourOf[k] = c;
-    ++out.begin[c + 1];
     if (c == kOverflow) continue;
     for (const int b : bodies) {
       if (!dynamic(b)) continue;
@@ -72,10 +70,8 @@ PairColours pairColours(const World<D>& world, const std::vector<BodyPair>& pair
       bits |= std::uint64_t{1} << c;
     }
   }
-  for (std::size_t c = 0; c <= kOverflow; ++c) out.begin[c + 1] += out.begin[c];
-  out.pairs.resize(pairs.size());
-  std::vector<std::size_t> next(out.begin.begin(), out.begin.end() - 1);
-  for (std::size_t k = 0; k < pairs.size(); ++k) out.pairs[next[colourOf[k]]++] = k;
+  PairColours out;
+  detail::groupPairsByClass(colourOf, kOverflow + 1, out.begin, out.pairs);  // the colours, then the overflow
   return out;
 }
 // [pair_colours]

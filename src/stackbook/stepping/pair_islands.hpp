@@ -15,6 +15,22 @@
 
 namespace stackbook {
 
+namespace detail {
+
+/// The pairs 0 .. classOf.size() - 1 grouped by class, in compressed form: class c holds
+/// pairs[begin[c]] .. pairs[begin[c + 1] - 1], ascending (a counting sort, stable).
+inline void groupPairsByClass(const std::vector<std::size_t>& classOf, std::size_t classes,
+                              std::vector<std::size_t>& begin, std::vector<std::size_t>& pairs) {
+  begin.assign(classes + 1, 0);
+  for (const std::size_t c : classOf) ++begin[c + 1];
+  for (std::size_t c = 0; c < classes; ++c) begin[c + 1] += begin[c];
+  pairs.resize(classOf.size());
+  std::vector<std::size_t> next(begin.begin(), begin.end() - 1);
+  for (std::size_t k = 0; k < classOf.size(); ++k) pairs[next[classOf[k]]++] = k;
+}
+
+}  // namespace detail
+
 // [pair_islands]
 /// The islands of a list of pairs, in compressed form: island c holds the pair indices
 /// pairs[begin[c]] .. pairs[begin[c + 1] - 1], ascending (the sweep's order). Islands are
@@ -95,12 +111,7 @@ PairIslands pairIslands(const World<D>& world, const std::vector<BodyPair>& pair
     islandOfPair[k] = static_cast<std::size_t>(island);
   }
   PairIslands out;
-  out.begin.assign(islands + 1, 0);
-  for (const std::size_t c : islandOfPair) ++out.begin[c + 1];
-  for (std::size_t c = 0; c < islands; ++c) out.begin[c + 1] += out.begin[c];
-  out.pairs.resize(pairs.size());
-  std::vector<std::size_t> next(out.begin.begin(), out.begin.end() - 1);
-  for (std::size_t k = 0; k < pairs.size(); ++k) out.pairs[next[islandOfPair[k]]++] = k;
+  detail::groupPairsByClass(islandOfPair, islands, out.begin, out.pairs);
   return out;
 }
 // [pair_islands]
