@@ -263,6 +263,9 @@ int main(int argc, char** argv) {
       add("stackbook colours", false, [coloured] { return makeStackbookPile(coloured, stackbook::SolverPreset::Gbf); });
       if (pilePass) add("stackbook pass", false, [p] { return makeStackbookPile(p, stackbook::SolverPreset::PassAsContact); });
       if (pilePass) add("stackbook short", false, [p] { return makeStackbookPile(p, stackbook::SolverPreset::PassAsContactShortLoops); });
+      add("stackbook gbf short", false, [p] { return makeStackbookPile(p, stackbook::SolverPreset::GbfShortLoops); });
+      add("stackbook gbf short colours", false,
+          [coloured] { return makeStackbookPile(coloured, stackbook::SolverPreset::GbfShortLoops); });
     }
     // Body count and dt without building anything in this process (its memory would be
     // counted in every child's peak).

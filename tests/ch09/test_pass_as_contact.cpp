@@ -204,7 +204,7 @@ TEST_CASE("each solver preset is the settings function it names, and its word na
   }
   CHECK_FALSE(solverPresetNamed("GBF").has_value());  // the words are case-sensitive
   CHECK_FALSE(solverPresetNamed("").has_value());
-  CHECK(solverPresetWords() == "\"gbf\", \"passAsContact\" or \"passAsContactShortLoops\"");
+  CHECK(solverPresetWords() == "\"gbf\", \"passAsContact\", \"passAsContactShortLoops\" or \"gbfShortLoops\"");
 }
 
 }  // TEST_SUITE

@@ -88,7 +88,7 @@ const std::vector<BadCase>& badCases() {
       {"unknown friction cone", R"({"solver": {"frictionCone": "pair"}})", "/solver/frictionCone",
        "must be \"impulse\" or \"step\", got \"pair\""},
       {"unknown solver preset", R"({"solver": {"preset": "short"}})", "/solver/preset",
-       "must be \"gbf\", \"passAsContact\" or \"passAsContactShortLoops\", got \"short\""},
+       "must be \"gbf\", \"passAsContact\", \"passAsContactShortLoops\" or \"gbfShortLoops\", got \"short\""},
       {"solver preset not a string", R"({"solver": {"preset": true}})", "/solver/preset",
        "expected a string, got the boolean true"},
       {"pass flag not a boolean", R"({"solver": {"shock": {"replacesContactStage": 1}}})",

@@ -19,21 +19,44 @@ namespace stackbook {
 enum class SolverPreset {
   Gbf,                     ///< GBF's step with shock propagation: StepSettings{} (chapters 8 and 9)
   PassAsContact,           ///< the pass as the contact stage: passAsContactStage()
-  PassAsContactShortLoops  ///< that with short pair loops: passAsContactStageShortLoops()
+  PassAsContactShortLoops,  ///< that with short pair loops: passAsContactStageShortLoops()
+  GbfShortLoops             ///< GBF's step with short pair loops: gbfStepShortLoops()
 };
 
 /// Every preset with the word a scene names it by, in the order the scene format lists them.
-inline constexpr std::array<std::pair<SolverPreset, std::string_view>, 3> kSolverPresets{{
+inline constexpr std::array<std::pair<SolverPreset, std::string_view>, 4> kSolverPresets{{
     {SolverPreset::Gbf, "gbf"},
     {SolverPreset::PassAsContact, "passAsContact"},
     {SolverPreset::PassAsContactShortLoops, "passAsContactShortLoops"},
+    {SolverPreset::GbfShortLoops, "gbfShortLoops"},
 }};
 
-/// The settings of `preset` from `base`: base's other fields (dt, threads, ...) are kept.
+/// `base` with every field a preset sets put back to GBF's, StepSettings{}'s: the pair caps
+/// and loop tolerances of the three loops, whether the pass replaces the contact stage, its
+/// sweeps and ramp, and the cone rule. Every preset starts from this, so a preset means the
+/// same settings whatever `base` came from (a scene that names one preset, timed under another).
+inline StepSettings withGbfLoops(StepSettings base) {
+  const StepSettings gbf;
+  base.collisionPairIterations = gbf.collisionPairIterations;
+  base.contactPairIterations = gbf.contactPairIterations;
+  base.pairImpulseTolerance = gbf.pairImpulseTolerance;
+  base.frictionCone = gbf.frictionCone;
+  base.shock.replacesContactStage = gbf.shock.replacesContactStage;
+  base.shock.sweepsPerLevel = gbf.shock.sweepsPerLevel;
+  base.shock.pairIterations = gbf.shock.pairIterations;
+  base.shock.restitution = gbf.shock.restitution;
+  base.shock.pairImpulseTolerance = gbf.shock.pairImpulseTolerance;
+  return base;
+}
+
+/// The settings of `preset` from `base`: the fields withGbfLoops() names are the preset's,
+/// base's other fields (dt, threads, sweep counts, ...) are kept.
 inline StepSettings applySolverPreset(SolverPreset preset, StepSettings base) {
+  base = withGbfLoops(std::move(base));
   switch (preset) {
     case SolverPreset::PassAsContact: return passAsContactStage(base);
     case SolverPreset::PassAsContactShortLoops: return passAsContactStageShortLoops(base);
+    case SolverPreset::GbfShortLoops: return gbfStepShortLoops(base);
     case SolverPreset::Gbf: break;
   }
   return base;
