@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string_view>
 
 #include "stack_scenes.hpp"
 #include "stackbook/stacking/solver_preset.hpp"
@@ -48,13 +49,16 @@ TEST_CASE("a preset means the same settings whatever preset its base came from")
   // exactly those presets' loops, not a mixture with the scene's.
   StepSettings plain;
   plain.dt = 1e-3;
-  for (const auto& [from, fromWord] : kSolverPresets) {
-    const StepSettings base = applySolverPreset(from, plain);
-    for (const auto& [preset, word] : kSolverPresets) {
+  // Pairs, not structured bindings: clang (the sanitize preset) refuses to CAPTURE a binding.
+  for (const auto& fromEntry : kSolverPresets) {
+    const std::string_view fromWord = fromEntry.second;
+    const StepSettings base = applySolverPreset(fromEntry.first, plain);
+    for (const auto& entry : kSolverPresets) {
+      const std::string_view word = entry.second;
       CAPTURE(fromWord);
       CAPTURE(word);
-      const StepSettings a = applySolverPreset(preset, plain);
-      const StepSettings b = applySolverPreset(preset, base);
+      const StepSettings a = applySolverPreset(entry.first, plain);
+      const StepSettings b = applySolverPreset(entry.first, base);
       CHECK(a.collisionPairIterations == b.collisionPairIterations);
       CHECK(a.contactPairIterations == b.contactPairIterations);
       CHECK(a.pairImpulseTolerance == b.pairImpulseTolerance);
