@@ -8,7 +8,7 @@
 // only) timed once formed.
 //
 //   peers_bench [--scenes a,b,...|all] [--seconds T|NAME=T ...] [--reps R|NAME=R ...] [--tiny]
-//               [--csv FILE] [--cache DIR|--no-cache] [--pile-pass] [--corners] [--list]
+//               [--csv FILE] [--cache DIR|--no-cache] [--pile-pass] [--corners] [--engines a,b,...] [--list]
 //
 // Build in Release: cmake --preset release && cmake --build build/release --target peers_bench
 // The full run and its duration on the project's machine: bench/README.md.
@@ -92,7 +92,7 @@ std::vector<Entry> catalogue(bool tiny, const std::string& cache) {
 int usage(const char* program) {
   std::fprintf(stderr,
                "usage: %s [--scenes a,b,...|all] [--seconds T|NAME=T ...] [--reps R|NAME=R ...] [--tiny] [--csv FILE]\n"
-               "          [--cache DIR|--no-cache] [--pile-pass] [--corners] [--list]\n",
+               "          [--cache DIR|--no-cache] [--pile-pass] [--corners] [--engines a,b,...] [--list]\n",
                program);
   return 2;
 }
@@ -133,6 +133,7 @@ int main(int argc, char** argv) {
   std::string csvPath;
   std::string cache = "peers_bench_cache";
   std::vector<std::string> wanted;
+  std::vector<std::string> engines;  // --engines: only these columns (by their names in the table)
   std::vector<std::string> secondsArgs;
   std::vector<std::string> repsArgs;
   for (int i = 1; i < argc; ++i) {
@@ -156,10 +157,23 @@ int main(int argc, char** argv) {
       repsArgs.push_back(argv[++i]);
     } else if (arg == "--scenes" && hasValue) {
       wanted = split(argv[++i]);
+    } else if (arg == "--engines" && hasValue) {
+      engines = split(argv[++i]);
     } else if (arg == "--seconds" && hasValue) {
       secondsArgs.push_back(argv[++i]);
     } else {
       return usage(argv[0]);
+    }
+  }
+  // Every column name the table can have: --engines takes these (a filter, e.g. for profiling one engine).
+  const std::vector<std::string> engineNames{"stackbook", "stackbook pass", "stackbook short", "stackbook short corners",
+                                             "Box2D", "Bullet", "stackbook colours", "stackbook gbf short",
+                                             "stackbook gbf short colours"};
+  for (const std::string& name : engines) {
+    if (std::find(engineNames.begin(), engineNames.end(), name) == engineNames.end()) {
+      std::fprintf(stderr, "peers_bench: --engines: unknown engine \"%s\" (the table's engine column names one)\n",
+                   name.c_str());
+      return 2;
     }
   }
   std::vector<Entry> scenes = catalogue(tiny, cache);
@@ -235,6 +249,7 @@ int main(int argc, char** argv) {
     };
     std::vector<Column> columns;
     const auto add = [&](std::string engine, bool isPeer, std::function<std::unique_ptr<Engine>()> make) {
+      if (!engines.empty() && std::find(engines.begin(), engines.end(), engine) == engines.end()) return;
       Column c;
       c.row.scene = e.key;
       c.row.engine = std::move(engine);

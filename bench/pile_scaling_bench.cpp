@@ -5,23 +5,27 @@
 // counters (impulses, signed-distance queries, narrow-phase pair queries), peak memory, and
 // the least-squares slope of log(cost) against log(N) for the time and for each counter.
 //
-//   pile_scaling_bench [--big | --n 50,100,...] [--steps M] [--reps R] [--threads T] [--colours] [--cache DIR|--no-cache]
+//   pile_scaling_bench [--big | --n 50,100,...] [--steps M] [--reps R] [--threads T] [--colours] [--preset WORD] [--cache DIR|--no-cache]
 //
 // Default N = 50, 100, 200 (forming them takes a few minutes the first time); --big adds 500
 // and 1000 (forming the 1000 pile simulates its 3.9 s of pouring). --threads T times the steps
 // with T threads (0: every hardware thread; default: the scene's, every hardware thread); the
 // formed piles are the same for any T, so the cache serves every T. --colours times them with
-// the sweeps colour by colour (chapter 10, "Colours"; the same formed piles). Build in Release.
+// the sweeps colour by colour (chapter 10, "Colours"; the same formed piles). --preset WORD times
+// them under a solver preset (chapter 9; "gbf", GBF's loops, by default; the scene's own is
+// "gbfShortLoops"). Build in Release.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "peers/child_run.hpp"
 #include "peers/pile_scenes.hpp"
+#include "stackbook/stacking/solver_preset.hpp"
 
 using namespace peers;
 
@@ -46,7 +50,7 @@ double logLogSlope(const std::vector<double>& x, const std::vector<double>& y) {
 }
 
 int usage(const char* program) {
-  std::fprintf(stderr, "usage: %s [--big | --n 50,100,...] [--steps M] [--reps R] [--threads T] [--colours] [--cache DIR|--no-cache]\n", program);
+  std::fprintf(stderr, "usage: %s [--big | --n 50,100,...] [--steps M] [--reps R] [--threads T] [--colours] [--preset WORD] [--cache DIR|--no-cache]\n", program);
   return 2;
 }
 
@@ -59,6 +63,9 @@ int main(int argc, char** argv) {
   std::string cache = "peers_bench_cache";
   int threads = -1;  // the timed steps' thread count; -1: the scene's (every hardware thread)
   bool colours = false;  // the timed steps' sweeps colour by colour
+  // The timed steps' solver preset (chapter 9): GBF's loops unless named; the piles are formed
+  // under the scene's own settings whatever it is.
+  stackbook::SolverPreset preset = stackbook::SolverPreset::Gbf;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     const bool hasValue = i + 1 < argc;
@@ -76,6 +83,14 @@ int main(int argc, char** argv) {
       threads = std::atoi(argv[++i]);
     } else if (arg == "--colours") {
       colours = true;
+    } else if (arg == "--preset" && hasValue) {
+      const std::optional<stackbook::SolverPreset> named = stackbook::solverPresetNamed(argv[++i]);
+      if (!named) {
+        std::fprintf(stderr, "pile_scaling_bench: --preset %s: expected %s\n", argv[i],
+                     stackbook::solverPresetWords().c_str());
+        return 2;
+      }
+      preset = *named;
     } else if (arg == "--cache" && hasValue) {
       cache = argv[++i];
     } else if (arg == "--no-cache") {
@@ -87,9 +102,9 @@ int main(int argc, char** argv) {
   if (sizes.empty() || steps < 1 || reps < 1 || threads < -1) return usage(argv[0]);
 
   std::printf("Formed 2D piles of N nonconvex bodies (L, U, star, bone), the scene's settings, dt 1 ms, %ld timed "
-              "steps, %d repetition(s), %s%s\n\n",
+              "steps, %d repetition(s), %s%s, timed under the preset \"%s\"\n\n",
               steps, reps, threads < 0 ? "the scene's threads" : (std::to_string(threads) + " thread(s)").c_str(),
-              colours ? ", sweeps colour by colour" : "");
+              colours ? ", sweeps colour by colour" : "", std::string(stackbook::solverPresetName(preset)).c_str());
   std::printf("| N | ms/step min | ms/step median | CPU ms/step median | impulses/step | phi queries/step | pair queries/step | max speed "
               "(m/s) | peak memory (MB) |\n|---|---|---|---|---|---|---|---|---|\n");
   std::vector<double> n, ms, cpu, impulses, phi, pairs;
@@ -110,7 +125,7 @@ int main(int argc, char** argv) {
     std::vector<double> allCpu;
     RunResult last;
     for (int r = 0; r < reps; ++r) {
-      RunResult run = runInChild([pile] { return makeStackbookPile(pile, stackbook::SolverPreset::Gbf); }, steps);
+      RunResult run = runInChild([pile, preset] { return makeStackbookPile(pile, preset); }, steps);
       peak = std::max(peak, run.peakKilobytes);
       if (!run.ok) {
         last = run;

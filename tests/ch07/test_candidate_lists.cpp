@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "stackbook/collision/narrow_phase.hpp"
+#include "stackbook/stepping/impulse_stage.hpp"
 #include "support/dimensions.hpp"
 #include "support/random_bodies.hpp"
 #include "test_shapes.hpp"
@@ -231,5 +232,48 @@ TEST_CASE_TEMPLATE("the narrow phase refuses a candidate reach that is negative 
   }
 }
 // [test_candidate_lists]
+
+TEST_CASE("a sweep's candidate lists are carried to the pairs of the next sweep by pair, new pairs start without") {
+  // Each pair's lists are marked by their translation t = (first, second): a list that
+  // reaches pair (i, j) from the last sweep carries (i, j), a new pair's lists are unmade.
+  const auto listsOf = [](const std::vector<BodyPair>& pairs) {
+    std::vector<PairCandidateLists<2>> lists(pairs.size());
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      lists[k].firstInSecond.made = lists[k].secondInFirst.made = true;
+      lists[k].firstInSecond.t = Vec2(pairs[k].first, pairs[k].second);
+      lists[k].firstInSecond.samples = {pairs[k].first, pairs[k].second};
+    }
+    return lists;
+  };
+  const std::vector<BodyPair> previous{{0, 1}, {0, 2}, {1, 3}, {2, 5}};
+  const std::vector<BodyPair> next{{0, 2}, {1, 2}, {1, 3}, {4, 5}, {4, 6}};
+  std::vector<PairCandidateLists<2>> lists = listsOf(previous), spare;
+  carryCandidateLists<2>(previous, next, lists, spare);
+  REQUIRE(lists.size() == next.size());
+  for (std::size_t k = 0; k < next.size(); ++k) {
+    CAPTURE(k);
+    const bool carried = k == 0 || k == 2;  // (0, 2) and (1, 3) were in the last sweep
+    CHECK(lists[k].firstInSecond.made == carried);
+    CHECK(lists[k].secondInFirst.made == carried);
+    if (carried) {
+      CHECK(lists[k].firstInSecond.t == Vec2(next[k].first, next[k].second));
+      CHECK(lists[k].firstInSecond.samples == std::vector<int>{next[k].first, next[k].second});
+    }
+  }
+  // The same pairs again: every list stays where it is. Fewer pairs: the spare storage,
+  // grown above, is used again and the result is still by pair.
+  const std::vector<PairCandidateLists<2>> before = lists;
+  carryCandidateLists<2>(next, next, lists, spare);
+  for (std::size_t k = 0; k < next.size(); ++k) CHECK(lists[k].firstInSecond.t == before[k].firstInSecond.t);
+  const std::vector<BodyPair> fewer{{1, 3}};
+  carryCandidateLists<2>(next, fewer, lists, spare);
+  REQUIRE(lists.size() == 1);
+  CHECK(lists[0].firstInSecond.made);
+  CHECK(lists[0].firstInSecond.t == Vec2(1.0, 3.0));
+  // No pairs last time (a stage's first sweep): nothing is carried.
+  carryCandidateLists<2>({}, previous, lists, spare);
+  REQUIRE(lists.size() == previous.size());
+  for (const PairCandidateLists<2>& l : lists) CHECK_FALSE(l.firstInSecond.made);
+}
 
 }  // TEST_SUITE

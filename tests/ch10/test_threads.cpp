@@ -181,6 +181,29 @@ ThreadsOutcome checkThreadCounts(const std::string& name, int steps, const std::
   return one;
 }
 
+/// The contact graph of the scene's start (chapter 9) on 1, 2 and 4 threads (blocks from two
+/// pairs on): the same edges in the same order, and the same detection work counted.
+template <int D>
+void checkGraphThreadCounts(const std::string& name) {
+  CAPTURE(name);
+  const Scene scene = loadScene(std::string(STACKBOOK_SCENES_DIR) + "/" + name + ".json");
+  const World<D>& world = std::get<SceneBodies<D>>(scene.bodies).world;
+  ContactGraphSettings settings = stepGraphSettings(scene.settings, resolveEffects<D>(world, scene.settings.effects));
+  settings.parallel.minPairs = 2;
+  settings.parallel.threads = 1;
+  DetectionCounters one;
+  const ContactGraph serial = worldContactGraph<D>(world, settings, &one);
+  REQUIRE(serial.edgeCount() > 50);  // enough pairs for every thread to take several blocks
+  for (const int threads : {2, 4}) {
+    CAPTURE(threads);
+    settings.parallel.threads = threads;
+    DetectionCounters many;
+    const ContactGraph parallel = worldContactGraph<D>(world, settings, &many);
+    CHECK(parallel.edges() == serial.edges());
+    CHECK(many == one);
+  }
+}
+
 }  // namespace
 
 TEST_SUITE(STACKBOOK_CHAPTER) {
@@ -262,6 +285,11 @@ TEST_CASE("The islands of a sweep are the connected components of its pairs in a
   CHECK(several > 50);  // the trials split into islands, not only one
 }
 // [test_pair_islands_definition]
+
+TEST_CASE("The contact graph is the same for 1, 2 and 4 threads: its edges in order and its work") {
+  checkGraphThreadCounts<2>("many_pyramids_2d");
+  checkGraphThreadCounts<3>("pyramid_3d");
+}
 
 TEST_CASE("A step is bit for bit the same for 1, 2 and 4 threads: many islands (2D)") {
   checkThreadCounts("many_pyramids_2d", 40);

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <compare>
-#include <numeric>
+#include <utility>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -113,7 +113,7 @@ int sweepAxis(const std::vector<BroadPhaseProxy<D>>& proxies,
 // [sweep_and_prune]
 /// All pairs (i, j), i < j, whose boxes (inflated by settings.margin) overlap, skipping
 /// pairs of two static bodies, sorted by (i, j). Sweep and prune: sort the boxes by their
-/// lower bound on one axis (a stable sort, so equal bounds keep index order), then walk
+/// lower bound on one axis (equal bounds in index order), then walk
 /// the sorted list; a box can only overlap the boxes that start before it ends on that
 /// axis. Cost: the sort, O(n log n), plus one full box test per pair whose intervals
 /// overlap on the sweep axis (Eq. (7.9)). counters->pairsTested counts those box tests,
@@ -129,23 +129,35 @@ std::vector<BodyPair> sweepAndPrune(const std::vector<BroadPhaseProxy<D>>& proxi
   boxes.reserve(proxies.size());
   for (const BroadPhaseProxy<D>& p : proxies) boxes.push_back(p.box.inflated(settings.margin));
 
-  std::vector<int> order(proxies.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int i, int j) {
-    return boxes[i].lower[axis] < boxes[j].lower[axis];
-  });
+  // The sort by lower bound, equal bounds in index order: the keys (lower bound, index) are
+  // all different, so sorting them gives the one order a stable sort of the indices would.
+  std::vector<std::pair<double, int>> keys(proxies.size());
+  for (int i = 0; i < n; ++i) keys[static_cast<std::size_t>(i)] = {boxes[static_cast<std::size_t>(i)].lower[axis], i};
+  std::sort(keys.begin(), keys.end());
+  // The boxes in sweep order, side by side, so that the walk below reads memory in order.
+  struct Swept {
+    Aabb<D> box;
+    int index;
+    bool isStatic;
+  };
+  std::vector<Swept> sorted;
+  sorted.reserve(proxies.size());
+  for (const auto& [lower, i] : keys) {
+    sorted.push_back({boxes[static_cast<std::size_t>(i)], i, proxies[static_cast<std::size_t>(i)].isStatic});
+  }
 
   std::vector<BodyPair> pairs;
   std::int64_t tested = 0;
   for (int s = 0; s < n; ++s) {
-    const int i = order[s];
-    if (boxes[i].isEmpty()) continue;
+    const Swept& a = sorted[static_cast<std::size_t>(s)];
+    if (a.box.isEmpty()) continue;
+    const double end = a.box.upper[axis];
     for (int t = s + 1; t < n; ++t) {
-      const int j = order[t];
-      if (boxes[j].lower[axis] > boxes[i].upper[axis]) break;  // sorted: no later box can overlap
-      if (proxies[i].isStatic && proxies[j].isStatic) continue;
+      const Swept& b = sorted[static_cast<std::size_t>(t)];
+      if (b.box.lower[axis] > end) break;  // sorted: no later box can overlap
+      if (a.isStatic && b.isStatic) continue;
       ++tested;
-      if (boxes[i].overlaps(boxes[j])) pairs.push_back({std::min(i, j), std::max(i, j)});
+      if (a.box.overlaps(b.box)) pairs.push_back({std::min(a.index, b.index), std::max(a.index, b.index)});
     }
   }
   std::sort(pairs.begin(), pairs.end());

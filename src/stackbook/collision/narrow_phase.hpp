@@ -648,20 +648,14 @@ void appendCandidatesInside(const CollisionBody<D>& owner, const Mat<D>& RA, con
 /// they cover the bodies' relative pose and remade when they do not, with the same result
 /// bit for bit; the caller keeps them from one ask of the pair to the next.
 /// The bodies must have shapes and finite poses (the caller checks them once). \ref ch07
+/// The overload on the pair's two views: `a` is body pair.first's, `b` body pair.second's
+/// (the indices name the bodies in the sample and in errors only), so that a caller may ask
+/// with a view that is not in a world's list, such as chapter 9's advanced body.
 template <int D>
 std::optional<InterferenceSample<D>> deepestApproachingInPair(
-    const std::vector<CollisionBody<D>>& bodies, const BodyPair& pair, const NarrowPhaseSettings& settings,
+    const CollisionBody<D>& a, const CollisionBody<D>& b, const BodyPair& pair, const NarrowPhaseSettings& settings,
     DetectionCounters* counters, std::vector<InterferenceCandidate<D>>& scratch,
     PairCandidateLists<D>* lists = nullptr) {
-  const int n = static_cast<int>(bodies.size());
-  if (pair.first < 0 || pair.first >= n || pair.second < 0 || pair.second >= n || pair.first == pair.second) {
-    std::ostringstream msg;
-    msg << "deepestApproachingInPair: pair (" << pair.first << ", " << pair.second
-        << ") must name two different bodies among " << n;
-    throw std::invalid_argument(msg.str());
-  }
-  const CollisionBody<D>& a = bodies[static_cast<std::size_t>(pair.first)];
-  const CollisionBody<D>& b = bodies[static_cast<std::size_t>(pair.second)];
   // pairInterference()'s checks, once for the pair.
   if (a.shape == nullptr || b.shape == nullptr || a.body == nullptr || b.body == nullptr) {
     std::ostringstream msg;
@@ -767,6 +761,25 @@ std::optional<InterferenceSample<D>> deepestApproachingInPair(
     if (std::optional<InterferenceSample<D>> s = approaching(index)) return s;
   }
   return std::nullopt;
+}
+
+/// The pair's views taken from `bodies` (the form the impulse loops use). Throws
+/// std::invalid_argument unless the pair names two different bodies of the list.
+template <int D>
+std::optional<InterferenceSample<D>> deepestApproachingInPair(
+    const std::vector<CollisionBody<D>>& bodies, const BodyPair& pair, const NarrowPhaseSettings& settings,
+    DetectionCounters* counters, std::vector<InterferenceCandidate<D>>& scratch,
+    PairCandidateLists<D>* lists = nullptr) {
+  const int n = static_cast<int>(bodies.size());
+  if (pair.first < 0 || pair.first >= n || pair.second < 0 || pair.second >= n || pair.first == pair.second) {
+    std::ostringstream msg;
+    msg << "deepestApproachingInPair: pair (" << pair.first << ", " << pair.second
+        << ") must name two different bodies among " << n;
+    throw std::invalid_argument(msg.str());
+  }
+  return deepestApproachingInPair<D>(bodies[static_cast<std::size_t>(pair.first)],
+                                     bodies[static_cast<std::size_t>(pair.second)], pair, settings, counters,
+                                     scratch, lists);
 }
 // [deepest_approaching_lazy]
 

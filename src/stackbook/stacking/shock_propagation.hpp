@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstddef>
+#include <exception>
 #include <span>
 #include <stdexcept>
 #include <vector>
@@ -31,6 +32,10 @@ struct ContactGraphSettings {
   BroadPhaseSettings broad;
   /// How predicted poses turn (the step's rotation rule, chapter 5).
   RotationUpdate rotation = RotationUpdate::ExponentialMap;
+  /// Threads for the pairs' tests (chapter 10; the step passes its own): each pair's two tests
+  /// read the pair only, so blocks of pairs run at the same time with the serial graph's edges,
+  /// in its order. One thread unless set.
+  ParallelSettings parallel{1, 16, 256, 4};
 };
 // [graph_settings]
 
@@ -47,7 +52,8 @@ template <int D>
 ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings& settings,
                                DetectionCounters* counters = nullptr) {
   const int n = world.size();
-  std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, settings.dt, settings.rotation);
+  std::vector<CollisionBody<D>> views =
+      stageViews<D>(world, Lookahead::Velocity, settings.dt, settings.rotation, settings.parallel);
   // The advanced bodies: a copy of p with v_p + dt a_p and L_p + dt tau_p.
   std::vector<RigidBody<D>> advanced(world.bodies.begin(), world.bodies.end());
   double reach = 0.0;
@@ -61,37 +67,77 @@ ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings
   BroadPhaseSettings broad = settings.broad;
   broad.margin = std::max(broad.margin, reach);  // the extra dt^2 |a| of the advanced body
   const std::vector<BodyPair> candidates = sweepAndPrune<D>(views, broad, counters);
-  // [graph_direction_test]
-  std::vector<ContactPair> edges;
-  std::vector<InterferenceCandidate<D>> scratch;  // reused by every query below
-  // One candidate pair is tested twice, each body advanced in turn: bound 2 * pairs. The
-  // second test sees the pair moved by dt^2 |a| from the first, so chapter 7's candidate
-  // lists made by the first usually answer it.
-  PairCandidateLists<D> lists;
-  for (const BodyPair& pair : candidates) {
-    lists.firstInSecond.made = lists.secondInFirst.made = false;  // a new pair: none yet
-    for (const int p : {pair.first, pair.second}) {
-      const int q = p == pair.first ? pair.second : pair.first;
-      const std::size_t k = static_cast<std::size_t>(p);
-      if (world.bodies[k].isStatic()) continue;
-      const CollisionBody<D> old = views[k];
-      views[k] = collisionBodyAt<D>(advanced[k], *world.shapes[k],
-                                    predictPose<D>(advanced[k], settings.dt, settings.rotation));  // x_p + dt (v_p + dt a_p)
-      // Whether any sample approaches: the lazy search of chapter 7 answers it with the
-      // normals of the samples it tests only; chapter 11's exact deepest points need the
-      // full query.
-      const bool approaching =
-          settings.narrow.surfaceQuery == SurfaceQuery::Samples
-              ? deepestApproachingInPair<D>(views, pair, settings.narrow, counters, scratch, &lists).has_value()
-              : deepestApproachingSample<D>(pairInterference<D>(views, pair, settings.narrow, counters), views)
-                    .has_value();
-      if (approaching) {
-        edges.push_back(ContactPair{q, p});
+  // Per pair, which of its bodies rests on the other: bit 0, pair.first advanced approaches
+  // pair.second (edge second -> first); bit 1, the reverse. The edges are listed from these in
+  // pair order afterwards, so they come out in the serial order whatever the threads.
+  const std::size_t count = candidates.size();
+  std::vector<unsigned char> rests(count, 0);
+  const bool lazy = settings.narrow.surfaceQuery == SurfaceQuery::Samples;
+  // Blocks of consecutive pairs, each counted and caught on its own (in block order below).
+  const int threads = lazy ? resolvedThreadCount(settings.parallel.threads) : 1;
+  const std::size_t tasks = static_cast<std::size_t>(threads) *
+                            static_cast<std::size_t>(std::max(settings.parallel.runsPerThread, 1));
+  const std::size_t grain = std::max<std::size_t>(static_cast<std::size_t>(std::max(settings.parallel.minPairs, 1)),
+                                                  (count + tasks - 1) / tasks);
+  const std::size_t blocks = (count + grain - 1) / grain;
+  std::vector<DetectionCounters> blockCounters(blocks);
+  std::vector<std::exception_ptr> errors(blocks);
+  parallelFor(threads, blocks, 1, [&](std::size_t firstBlock, std::size_t lastBlock) {
+    std::vector<InterferenceCandidate<D>> scratch;  // reused by every query of these blocks
+    // One candidate pair is tested twice, each body advanced in turn: bound 2 * pairs. The
+    // second test sees the pair moved by dt^2 |a| from the first, so chapter 7's candidate
+    // lists made by the first usually answer it.
+    PairCandidateLists<D> lists;
+    for (std::size_t block = firstBlock; block < lastBlock; ++block) {
+      DetectionCounters* blockCounter = counters != nullptr ? &blockCounters[block] : nullptr;
+      try {
+        for (std::size_t k = block * grain; k < std::min(count, (block + 1) * grain); ++k) {
+          const BodyPair& pair = candidates[k];
+          lists.firstInSecond.made = lists.secondInFirst.made = false;  // a new pair: none yet
+          // [graph_direction_test]
+          for (int side = 0; side < 2; ++side) {
+            const int p = side == 0 ? pair.first : pair.second;
+            const std::size_t i = static_cast<std::size_t>(p);
+            if (world.bodies[i].isStatic()) continue;
+            // Body p advanced: x_p + dt (v_p + dt a_p).
+            const CollisionBody<D> moved = collisionBodyAt<D>(
+                advanced[i], *world.shapes[i], predictPose<D>(advanced[i], settings.dt, settings.rotation));
+            bool approaching = false;
+            if (lazy) {  // the lazy search of chapter 7: the normals of the samples it tests only
+              const CollisionBody<D>& a = side == 0 ? moved : views[static_cast<std::size_t>(pair.first)];
+              const CollisionBody<D>& b = side == 0 ? views[static_cast<std::size_t>(pair.second)] : moved;
+              approaching =
+                  deepestApproachingInPair<D>(a, b, pair, settings.narrow, blockCounter, scratch, &lists).has_value();
+            } else {  // chapter 11's exact deepest points need the full query (one thread)
+              const CollisionBody<D> old = views[i];
+              views[i] = moved;
+              approaching = deepestApproachingSample<D>(
+                                pairInterference<D>(views, pair, settings.narrow, blockCounter), views)
+                                .has_value();
+              views[i] = old;
+            }
+            if (approaching) rests[k] |= static_cast<unsigned char>(1u << side);  // edge q -> p
+          }
+          // [graph_direction_test]
+        }
+      } catch (...) {
+        errors[block] = std::current_exception();  // the rest of this block is not tested
       }
-      views[k] = old;
     }
+  });
+  // The first error in pair order is the one the serial loop would have thrown.
+  for (const std::exception_ptr& error : errors) {
+    if (error) std::rethrow_exception(error);
   }
-  return ContactGraph(n, edges);  // [graph_direction_test]
+  if (counters != nullptr) {
+    for (const DetectionCounters& c : blockCounters) *counters += c;
+  }
+  std::vector<ContactPair> edges;
+  for (std::size_t k = 0; k < count; ++k) {
+    if ((rests[k] & 1u) != 0) edges.push_back(ContactPair{candidates[k].second, candidates[k].first});
+    if ((rests[k] & 2u) != 0) edges.push_back(ContactPair{candidates[k].first, candidates[k].second});
+  }
+  return ContactGraph(n, edges);
 }
 // [world_contact_graph]
 
@@ -282,6 +328,7 @@ inline ContactGraphSettings stepGraphSettings(const StepSettings& settings, cons
   g.narrow = settings.detection.narrow;
   g.broad = settings.detection.broad;
   g.rotation = settings.rotation;
+  g.parallel = settings.parallel;
   return g;
 }
 

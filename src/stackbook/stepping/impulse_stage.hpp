@@ -406,23 +406,28 @@ int sweepPairs(World<D>& world, std::vector<CollisionBody<D>>& views,
 }
 // [sweep_pairs]
 
-/// The candidate lists of `pairs` (chapter 7): those of a pair in `previous` (with lists
-/// `previousLists`, in the same order) move over, a new pair starts with none. Both pair
-/// lists are in the broad phase's sorted (i, j) order, so one merge finds them.
+/// The candidate lists of `pairs` (chapter 7), carried over from the last sweep: the lists
+/// of a pair in `previous` (held by `lists`, in the same order) move over, a new pair starts
+/// with none. Both pair lists are in the broad phase's sorted (i, j) order, so one merge
+/// finds them. The result is built in `spare`, storage kept for the stage, and swapped into
+/// `lists`, so that a sweep allocates nothing once both have grown; when the pairs are the
+/// last sweep's, `lists` is already the result. Lists change the work of a query, never its
+/// answer (CandidateList::covers()), so which list a pair gets affects the time only.
 template <int D>
-std::vector<PairCandidateLists<D>> carriedCandidateLists(const std::vector<BodyPair>& previous,
-                                                         std::vector<PairCandidateLists<D>> previousLists,
-                                                         const std::vector<BodyPair>& pairs) {
-  std::vector<PairCandidateLists<D>> lists(pairs.size());
-  const auto key = [](const BodyPair& p) { return std::pair<int, int>(p.first, p.second); };
+void carryCandidateLists(const std::vector<BodyPair>& previous, const std::vector<BodyPair>& pairs,
+                         std::vector<PairCandidateLists<D>>& lists, std::vector<PairCandidateLists<D>>& spare) {
+  if (pairs == previous && lists.size() == pairs.size()) return;
+  spare.resize(pairs.size());
   std::size_t j = 0;
-  for (std::size_t i = 0; i < pairs.size() && j < previous.size() && j < previousLists.size(); ++i) {
-    while (j < previous.size() && key(previous[j]) < key(pairs[i])) ++j;
-    if (j < previous.size() && j < previousLists.size() && key(previous[j]) == key(pairs[i])) {
-      lists[i] = std::move(previousLists[j]);
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    while (j < previous.size() && previous[j] < pairs[i]) ++j;
+    if (j < previous.size() && j < lists.size() && previous[j] == pairs[i]) {
+      std::swap(spare[i], lists[j]);  // the pair's lists; lists[j] takes spare storage
+    } else {
+      spare[i].firstInSecond.made = spare[i].secondInFirst.made = false;  // keeps the capacity
     }
   }
-  return lists;
+  std::swap(lists, spare);
 }
 
 // [impulse_stage]
@@ -441,13 +446,13 @@ void runImpulseStage(World<D>& world, const StageSpec& spec, double dt,
   double largest = 0.0;
   if (spec.stageApproachTolerance > 0.0) measured.largestApproach = &largest;
   // Candidate lists (chapter 7) live for the stage: a pair the broad phase reports again in
-  // the next sweep keeps its lists (carriedCandidateLists()).
+  // the next sweep keeps its lists (carryCandidateLists()).
   std::vector<BodyPair> previousPairs;
-  std::vector<PairCandidateLists<D>> lists;
+  std::vector<PairCandidateLists<D>> lists, spare;
   for (int sweep = 1; sweep <= spec.sweeps; ++sweep) {
     const std::vector<BodyPair> pairs =
         sweepAndPrune<D>(views, settings.detection.broad, &counters.detection);
-    lists = carriedCandidateLists<D>(previousPairs, std::move(lists), pairs);
+    carryCandidateLists<D>(previousPairs, pairs, lists, spare);
     previousPairs = pairs;
     largest = 0.0;
     if (sweepPairs<D>(world, views, pairs, measured, sweep, dt, settings, counters, &lists) == 0) break;
