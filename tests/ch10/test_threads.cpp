@@ -286,6 +286,50 @@ TEST_CASE("The islands of a sweep are the connected components of its pairs in a
 }
 // [test_pair_islands_definition]
 
+// [test_level_waves]
+TEST_CASE("The waves of the pass's levels: every level once, after each level it reads, in the first wave it can be") {
+  for (const char* name : {"many_pyramids_2d", "pyramid_20_2d", "plank_on_two_stacks_2d"}) {
+    CAPTURE(name);
+    const Scene scene = loadScene(std::string(STACKBOOK_SCENES_DIR) + "/" + name + ".json");
+    const World<2>& world = std::get<SceneBodies<2>>(scene.bodies).world;
+    const ContactGraph graph =
+        worldContactGraph<2>(world, stepGraphSettings(scene.settings, resolveEffects<2>(world, scene.settings.effects)));
+    const ContactLevels levels = topologicalLevels(graph);
+    std::vector<char> skipped(levels.levelCount(), 0);
+    for (std::size_t l = 0; l < levels.levelCount(); ++l) skipped[l] = isolatedLevel<2>(world, graph, levels, l) ? 1 : 0;
+    const std::vector<std::vector<std::size_t>> waves = levelWaves<2>(world, levels, skipped);
+    std::vector<int> waveOf(levels.levelCount(), -1);
+    std::size_t widest = 0;
+    for (std::size_t w = 0; w < waves.size(); ++w) {
+      REQUIRE_FALSE(waves[w].empty());
+      widest = std::max(widest, waves[w].size());
+      for (std::size_t i = 0; i < waves[w].size(); ++i) {
+        const std::size_t l = waves[w][i];
+        CHECK(waveOf[l] == -1);  // once
+        if (i > 0) CHECK(waves[w][i - 1] < l);  // ascending inside a wave
+        waveOf[l] = static_cast<int>(w);
+      }
+    }
+    for (std::size_t l = 0; l < levels.levelCount(); ++l) {
+      CAPTURE(l);
+      CHECK((waveOf[l] == -1) == (skipped[l] != 0));  // every level that is swept, and only those
+      if (skipped[l] != 0) continue;
+      // The levels whose dynamic bodies l's pairs read: all in earlier waves, one in the wave just before.
+      int latest = -1;
+      for (const ContactPair& c : levels.pairs(l)) {
+        const std::size_t k = static_cast<std::size_t>(levels.levelOfBody[static_cast<std::size_t>(c.below)]);
+        if (k == l || world.bodies[static_cast<std::size_t>(c.below)].isStatic()) continue;
+        CHECK(waveOf[k] >= 0);
+        CHECK(waveOf[k] < waveOf[l]);
+        latest = std::max(latest, waveOf[k]);
+      }
+      CHECK(waveOf[l] == latest + 1);
+    }
+    CHECK(widest >= 2);  // some wave has levels to sweep at the same time
+  }
+}
+// [test_level_waves]
+
 TEST_CASE("The contact graph is the same for 1, 2 and 4 threads: its edges in order and its work") {
   checkGraphThreadCounts<2>("many_pyramids_2d");
   checkGraphThreadCounts<3>("pyramid_3d");

@@ -255,6 +255,83 @@ bool isolatedLevel(const World<D>& world, const ContactGraph& graph, const Conta
   return true;
 }
 
+// [level_waves]
+/// The waves of `levels` (chapter 10, "Threads"): the levels that are not `skipped`, grouped so
+/// that the levels of one wave can be swept at the same time. Level l depends on level k < l
+/// when a pair of l has its lower body in k and that body is dynamic: l reads the velocities k
+/// leaves and needs k frozen. Level l's wave is one more than the latest wave of a level it
+/// depends on (0 if none), so every wave depends only on earlier ones. Two levels of one wave
+/// touch no common body: each writes only its own bodies and reads only bodies of earlier waves,
+/// frozen by then, so sweeping them at the same time, or in any order, performs the same
+/// operations on the same data as the bottom-up pass. Waves in order, each level ascending. O(L + m).
+template <int D>
+std::vector<std::vector<std::size_t>> levelWaves(const World<D>& world, const ContactLevels& levels,
+                                                 const std::vector<char>& skipped) {
+  std::vector<int> waveOf(levels.levelCount(), -1);
+  std::vector<std::vector<std::size_t>> waves;
+  for (std::size_t l = 0; l < levels.levelCount(); ++l) {
+    if (skipped[l] != 0) continue;
+    int wave = 0;
+    for (const ContactPair& c : levels.pairs(l)) {
+      const std::size_t k = static_cast<std::size_t>(levels.levelOfBody[static_cast<std::size_t>(c.below)]);
+      if (k == l || world.bodies[static_cast<std::size_t>(c.below)].isStatic()) continue;
+      wave = std::max(wave, waveOf[k] + 1);  // k < l: its wave is known (a skipped level supports nothing)
+    }
+    waveOf[l] = wave;
+    if (static_cast<std::size_t>(wave) >= waves.size()) waves.resize(static_cast<std::size_t>(wave) + 1);
+    waves[static_cast<std::size_t>(wave)].push_back(l);
+  }
+  return waves;
+}
+// [level_waves]
+
+// [level_waves_sweep]
+/// The pass's levels wave by wave (levelWaves()) on `threads` threads: a wave of one level, or
+/// of fewer than settings.parallel.minPairs pairs in all, is swept level by level as the
+/// bottom-up pass sweeps it (a level's sweeps may split into islands or colours); the levels
+/// of a larger wave are swept at the same time, each on one thread, each counting into
+/// its own StageCounters, added in level order. Then the wave's bodies are frozen. If levels
+/// throw, the exception of the first of them is rethrown (the pass is abandoned, as it would
+/// be at that level). sweepLevel(l, settings, counters, pairs, lists) sweeps level l.
+template <int D, class SweepLevel>
+void sweepLevelWaves(const World<D>& world, const ContactLevels& levels, const std::vector<char>& skipped,
+                     int threads, const StepSettings& settings, StageCounters& counters, FreezeGuard<D>& frozen,
+                     const SweepLevel& sweepLevel, std::vector<BodyPair>& pairs,
+                     std::vector<PairCandidateLists<D>>& lists) {
+  StepSettings oneThread = settings;
+  oneThread.parallel.threads = 1;
+  const std::size_t minPairs = static_cast<std::size_t>(std::max(settings.parallel.minPairs, 2));
+  for (const std::vector<std::size_t>& wave : levelWaves<D>(world, levels, skipped)) {
+    std::size_t wavePairs = 0;
+    for (const std::size_t l : wave) wavePairs += levels.pairs(l).size();
+    if (wave.size() == 1 || wavePairs < minPairs) {  // too little to share: level by level
+      for (const std::size_t l : wave) sweepLevel(l, settings, counters, pairs, lists);
+    } else {
+      std::vector<StageCounters> local(wave.size());
+      std::vector<std::exception_ptr> error(wave.size());
+      parallelFor(threads, wave.size(), 1, [&](std::size_t first, std::size_t last) {
+        std::vector<BodyPair> levelPairs;
+        std::vector<PairCandidateLists<D>> levelLists;
+        for (std::size_t k = first; k < last; ++k) {
+          try {
+            sweepLevel(wave[k], oneThread, local[k], levelPairs, levelLists);
+          } catch (...) {
+            error[k] = std::current_exception();
+          }
+        }
+      });
+      for (const std::exception_ptr& e : error) {
+        if (e) std::rethrow_exception(e);
+      }
+      for (const StageCounters& c : local) counters += c;
+    }
+    for (const std::size_t l : wave) {
+      for (const int body : levels.bodies(l)) frozen.freeze(body);  // Eq. (9.4)
+    }
+  }
+}
+// [level_waves_sweep]
+
 /// One shock-propagation pass over `levels` (built from `graph`): for each level l bottom
 /// up, settings.shock.sweepsPerLevel sweeps over the level's pairs with restitution
 /// e_s = settings.shock.restitutionAt(s) (at most shock.pairIterations impulses per pair
@@ -276,11 +353,10 @@ void shockPropagationPass(World<D>& world, const ContactGraph& graph, const Cont
   spec.rollingFriction = effects.rollingFriction;
   spec.ledger = ledger;  // the step's ledger under FrictionConeRule::StepTotal (Eq. (8.13))
   spec.pairImpulseTolerance = shock.pairImpulseTolerance;
-  double largest = 0.0;  // a level sweep's fastest approach (levelApproachTolerance)
-  if (shock.levelApproachTolerance > 0.0) spec.largestApproach = &largest;
   spec.recorder = settings.contactRecorder;  // chapter 10's contacts output; nullptr: off
   spec.stage = ContactStage::Shock;
-  std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, settings.dt, settings.rotation);
+  std::vector<CollisionBody<D>> views =
+      stageViews<D>(world, Lookahead::Velocity, settings.dt, settings.rotation, settings.parallel);
   // Isolated levels are skipped only when the contact stage swept them (Eq. (9.9)).
   const bool skipIsolated = contactStageRuns(settings, effects);
   std::vector<char> isolated(levels.levelCount(), 0);  // decided before anything is frozen
@@ -288,24 +364,38 @@ void shockPropagationPass(World<D>& world, const ContactGraph& graph, const Cont
     isolated[l] = isolatedLevel<D>(world, graph, levels, l) ? 1 : 0;
   }  // [shock_levels_loop]
   FreezeGuard<D> frozen(world);
-  std::vector<BodyPair> pairs;
-  std::vector<PairCandidateLists<D>> lists;  // chapter 7's candidate lists, for the level's sweeps
-  for (std::size_t l = 0; l < levels.levelCount(); ++l) {  // bottom up, Eq. (9.1)
-    if (isolated[l] != 0) continue;
+  // The sweeps of level l with `levelSettings`, counted into `levelCounters`; `pairs` and
+  // `lists` (chapter 7's candidate lists) are storage the caller keeps between levels.
+  const auto sweepLevel = [&](std::size_t l, const StepSettings& levelSettings, StageCounters& levelCounters,
+                              std::vector<BodyPair>& pairs, std::vector<PairCandidateLists<D>>& lists) {
     pairs.clear();
     for (const ContactPair& c : levels.pairs(l)) pairs.push_back(BodyPair{c.below, c.above});  // Eq. (9.2)
     // No list of the last level answers for this one: mark them all unmade, keeping the
     // vectors' capacity (a level's lists are made again at its first sweep).
     lists.resize(pairs.size());
     for (PairCandidateLists<D>& kept : lists) kept.firstInSecond.made = kept.secondInFirst.made = false;
+    StageSpec levelSpec = spec;
+    double largest = 0.0;  // a level sweep's fastest approach (levelApproachTolerance)
+    if (shock.levelApproachTolerance > 0.0) levelSpec.largestApproach = &largest;
     // A sweep that applies no impulse ends the level: nothing approaches, and no later
     // sweep can find an approach, since restitution only scales an impulse (Eq. (8.5)).
     for (int s = 1; s <= shock.sweepsPerLevel && !pairs.empty(); ++s) {
       largest = 0.0;
-      if (sweepPairs<D>(world, views, pairs, spec, s, settings.dt, settings, counters, &lists) == 0) break;
+      if (sweepPairs<D>(world, views, pairs, levelSpec, s, settings.dt, levelSettings, levelCounters, &lists) == 0) break;
       if (shock.levelApproachTolerance > 0.0 && largest <= shock.levelApproachTolerance) break;
     }
-    for (const int body : levels.bodies(l)) frozen.freeze(body);  // Eq. (9.4)
+  };
+  std::vector<BodyPair> pairs;
+  std::vector<PairCandidateLists<D>> lists;
+  const int threads = resolvedThreadCount(settings.parallel.threads);
+  if (threads == 1 || spec.recorder != nullptr) {  // one level after the other, bottom up
+    for (std::size_t l = 0; l < levels.levelCount(); ++l) {  // Eq. (9.1)
+      if (isolated[l] != 0) continue;
+      sweepLevel(l, settings, counters, pairs, lists);
+      for (const int body : levels.bodies(l)) frozen.freeze(body);  // Eq. (9.4)
+    }
+  } else {  // waves of levels that do not read each other (chapter 10, "Threads")
+    sweepLevelWaves<D>(world, levels, isolated, threads, settings, counters, frozen, sweepLevel, pairs, lists);
   }
   frozen.releaseAll();
   counters.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();  // [shock_levels_loop]

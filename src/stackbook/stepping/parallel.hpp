@@ -16,7 +16,8 @@ struct ParallelSettings {
   /// Threads a step may use (>= 0); 0 means all the machine's hardware threads.
   int threads = 0;
   /// A sweep with fewer pairs than this runs on one thread (the split costs more than it
-  /// saves), as does a sweep whose pairs form one island.
+  /// saves), as does a sweep whose pairs form one island, and a wave of the pass's levels
+  /// (sweepLevelWaves()) with fewer pairs than this in all is swept level by level.
   int minPairs = 16;
   /// Per-body loops (stage views, velocity and position updates) hand each thread at
   /// least this many bodies.
