@@ -244,4 +244,51 @@ TEST_CASE_TEMPLATE("the broad phase rejects a bad axis or margin with a message"
   CHECK_THROWS_WITH_AS(sweepAndPrune<D>(bad), doctest::Contains("proxy 1"), std::invalid_argument);
 }
 
+// [test_kept_broad_phase]
+TEST_CASE_TEMPLATE("the kept broad phase of a stage reports sweep and prune's pairs at every sweep with fewer box tests",
+                   Dim, In2D, In3D) {
+  constexpr int D = Dim::value;
+  RandomSource random(900 + D);
+  const auto shape = stackbook::testing::boxShape<D>(Vec<D>::Constant(0.5));
+  constexpr int n = 60;
+  std::vector<RigidBody<D>> bodies;
+  std::vector<Pose<D>> poses;
+  for (int i = 0; i < n; ++i) {
+    const Vec<D> at = random.vector<D>(-4.0, 4.0);
+    bodies.push_back(i % 8 == 0 ? makeStaticBody<D>(at) : makeDynamicBody<D>(1.0, AngVec<D>::Constant(1.0)));
+    poses.push_back(Pose<D>{at, random.orientation<D>()});
+  }
+  const auto viewsNow = [&] {
+    std::vector<CollisionBody<D>> views;
+    for (int i = 0; i < n; ++i) views.push_back(collisionBodyAt<D>(bodies[i], shape, poses[i]));
+    return views;
+  };
+  KeptBroadPhase<D> kept, off;
+  BroadPhaseSettings noSlack;
+  noSlack.keepSlack = 0.0;
+  DetectionCounters keptWork, offWork, sweepWork;
+  for (int sweep = 0; sweep < 40; ++sweep) {
+    CAPTURE(sweep);
+    // The dynamic bodies move a little at most sweeps (as in a stage) and far at every tenth,
+    // which the kept pairs no longer cover.
+    const double step = sweep % 10 == 9 ? 0.4 : 1e-3;
+    for (int i = 0; i < n; ++i) {
+      if (bodies[static_cast<std::size_t>(i)].isStatic()) continue;
+      poses[static_cast<std::size_t>(i)].position += random.vector<D>(-step, step);
+    }
+    const std::vector<CollisionBody<D>> views = viewsNow();
+    const std::vector<BodyPair> expected = sweepAndPrune<D>(views, {}, &sweepWork);
+    REQUIRE_FALSE(expected.empty());
+    CHECK(kept.pairs(views, {}, &keptWork) == expected);
+    CHECK(off.pairs(views, noSlack, &offWork) == expected);
+  }
+  CHECK(keptWork.pairsOverlapping == sweepWork.pairsOverlapping);
+  CHECK(keptWork.pairsTested < sweepWork.pairsTested / 2);  // the kept pairs answered most sweeps
+  CHECK(offWork == sweepWork);  // no slack: sweep and prune at every sweep, the same work
+  BroadPhaseSettings bad;
+  bad.keepSlack = -0.1;
+  CHECK_THROWS_WITH_AS(kept.pairs(viewsNow(), bad), doctest::Contains("settings.keepSlack"), std::invalid_argument);
+}
+// [test_kept_broad_phase]
+
 }  // TEST_SUITE

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <compare>
 #include <utility>
 #include <sstream>
@@ -39,6 +40,11 @@ struct BroadPhaseSettings {
   /// Every box is inflated by this much on every side before the test, so pairs whose
   /// boxes are within 2 * margin of each other are reported too. Must be >= 0.
   double margin = 0.0;
+  /// KeptBroadPhase (a stage's sweeps): each body's box is grown by this fraction of its
+  /// largest extent when the kept pairs are found, which then answer until a box moves by
+  /// half that. Changes the work, never the pairs. 0: sweep and prune at every sweep.
+  /// Must be finite and >= 0.
+  double keepSlack = 0.05;
 };
 
 /// One proxy per collision view: worldBounds() at the view's pose (with the view's kept
@@ -71,6 +77,8 @@ void checkBroadPhaseInput(const std::vector<BroadPhaseProxy<D>>& proxies,
         << settings.axis;
   } else if (!std::isfinite(settings.margin) || settings.margin < 0.0) {
     msg << caller << ": settings.margin must be finite and >= 0, got " << settings.margin;
+  } else if (!std::isfinite(settings.keepSlack) || settings.keepSlack < 0.0) {
+    msg << caller << ": settings.keepSlack must be finite and >= 0, got " << settings.keepSlack;
   } else {
     for (std::size_t i = 0; i < proxies.size(); ++i) {
       const Aabb<D>& b = proxies[i].box;
@@ -176,6 +184,80 @@ std::vector<BodyPair> sweepAndPrune(const std::vector<CollisionBody<D>>& bodies,
                                     DetectionCounters* counters = nullptr) {
   return sweepAndPrune<D>(broadPhaseProxies<D>(bodies), settings, counters);
 }
+
+// [kept_broad_phase]
+/// The broad phase of one stage's sweeps (chapter 8), found once and kept while it answers:
+/// pairs() returns exactly the list sweepAndPrune() would, sweep after sweep. When the pairs
+/// are found, each body's box is grown by settings.keepSlack times its largest extent (a
+/// static body's not at all: it does not move) and swept once. At a later sweep, if every
+/// box still lies within half its growth of the box it had then, two boxes that overlap now
+/// overlapped grown, so the kept pairs hold every pair that overlaps now; testing their boxes
+/// as they are now, in the kept (i, j) order, gives sweepAndPrune()'s list. Otherwise the pairs
+/// are found again. counters->pairsTested counts the boxes compared (the kept pairs', plus
+/// the sweep's when they are found again) and pairsOverlapping the pairs returned.
+template <int D>
+class KeptBroadPhase {
+ public:
+  std::vector<BodyPair> pairs(const std::vector<CollisionBody<D>>& bodies, const BroadPhaseSettings& settings,
+                              DetectionCounters* counters = nullptr) {
+    std::vector<BroadPhaseProxy<D>> proxies = broadPhaseProxies<D>(bodies);
+    detail::checkBroadPhaseInput<D>(proxies, settings, "KeptBroadPhase");
+    bool anyEmpty = false;
+    for (const BroadPhaseProxy<D>& p : proxies) anyEmpty = anyEmpty || p.box.isEmpty();
+    if (!(settings.keepSlack > 0.0) || anyEmpty) return sweepAndPrune<D>(proxies, settings, counters);
+    std::int64_t tested = 0;
+    if (!covers(proxies)) {
+      made_ = proxies;
+      slack_.resize(proxies.size());
+      std::vector<BroadPhaseProxy<D>> grown = proxies;
+      for (std::size_t i = 0; i < proxies.size(); ++i) {
+        const Aabb<D>& box = proxies[i].box;
+        const double extent = (box.upper - box.lower).maxCoeff();
+        // No growth for a static body, an unbounded box, or one too small to move within
+        // round-off: such a box must stay exactly where it was.
+        double slack = proxies[i].isStatic ? 0.0 : settings.keepSlack * extent;
+        const double scale = box.lower.cwiseAbs().maxCoeff() + box.upper.cwiseAbs().maxCoeff();
+        if (!std::isfinite(slack) || !(slack > 1e-9 * scale)) slack = 0.0;
+        slack_[i] = slack;
+        grown[i].box = box.inflated(slack);
+      }
+      DetectionCounters sweep;
+      kept_ = sweepAndPrune<D>(grown, settings, &sweep);
+      tested += sweep.pairsTested;
+    }
+    std::vector<BodyPair> out;
+    for (const BodyPair& p : kept_) {  // sorted by (i, j), as sweepAndPrune() reports
+      ++tested;
+      const Aabb<D> a = proxies[static_cast<std::size_t>(p.first)].box.inflated(settings.margin);
+      const Aabb<D> b = proxies[static_cast<std::size_t>(p.second)].box.inflated(settings.margin);
+      if (a.overlaps(b)) out.push_back(p);
+    }
+    if (counters != nullptr) {
+      counters->pairsTested += tested;
+      counters->pairsOverlapping += static_cast<std::int64_t>(out.size());
+    }
+    return out;
+  }
+
+ private:
+  /// True when the kept pairs answer for these boxes: the same bodies, static as they were,
+  /// each box within half its growth of the box it had when the pairs were found.
+  bool covers(const std::vector<BroadPhaseProxy<D>>& proxies) const {
+    if (made_.size() != proxies.size()) return false;
+    for (std::size_t i = 0; i < proxies.size(); ++i) {
+      if (proxies[i].isStatic != made_[i].isStatic) return false;
+      const double half = 0.5 * slack_[i];
+      if (!(proxies[i].box.lower.array() >= made_[i].box.lower.array() - half).all()) return false;
+      if (!(proxies[i].box.upper.array() <= made_[i].box.upper.array() + half).all()) return false;
+    }
+    return true;
+  }
+
+  std::vector<BroadPhaseProxy<D>> made_;  ///< each body's box and static flag when the pairs were found
+  std::vector<double> slack_;             ///< each box's growth then
+  std::vector<BodyPair> kept_;            ///< the pairs of the grown boxes, sorted by (i, j)
+};
+// [kept_broad_phase]
 
 // [all_pairs]
 /// The same pairs as sweepAndPrune() by testing every pair that is not static-static:

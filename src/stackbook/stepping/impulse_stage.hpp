@@ -432,7 +432,8 @@ void carryCandidateLists(const std::vector<BodyPair>& previous, const std::vecto
 
 // [impulse_stage]
 /// One stage: up to spec.sweeps sweeps; each sweep finds the overlapping pairs at the
-/// tested poses (sweep and prune, fixed (i, j) order) and runs resolvePair() on each.
+/// tested poses (sweep and prune's list, found once and kept while it answers: KeptBroadPhase,
+/// chapter 7; fixed (i, j) order) and runs resolvePair() on each.
 /// A sweep that applies no impulse ends the stage. Deterministic: the pair order is the
 /// broad phase's sorted order and no unordered container is involved.
 template <int D>
@@ -449,9 +450,10 @@ void runImpulseStage(World<D>& world, const StageSpec& spec, double dt,
   // the next sweep keeps its lists (carryCandidateLists()).
   std::vector<BodyPair> previousPairs;
   std::vector<PairCandidateLists<D>> lists, spare;
+  // The broad phase's pairs at each sweep, found once and kept while they answer (chapter 7).
+  KeptBroadPhase<D> broad;
   for (int sweep = 1; sweep <= spec.sweeps; ++sweep) {
-    const std::vector<BodyPair> pairs =
-        sweepAndPrune<D>(views, settings.detection.broad, &counters.detection);
+    const std::vector<BodyPair> pairs = broad.pairs(views, settings.detection.broad, &counters.detection);
     carryCandidateLists<D>(previousPairs, pairs, lists, spare);
     previousPairs = pairs;
     largest = 0.0;
