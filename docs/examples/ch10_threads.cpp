@@ -84,7 +84,7 @@ int main() {
   const Row rows[] = {{"many_pyramids_2d", 30}, {"shapes_in_bin_2d", 300}, {"pyramid_20_2d", 10},
                       {"pyramid_3d", 8}};
   std::printf("| scene | steps | islands per split sweep | share of pair visits on one thread | "
-              "bound on the speed-up, 2 threads | same state bits, 1 / 2 / 4 threads | measured speed-up, 2 threads |\n");
+              "bound from the islands, 2 threads | same state bits, 1 / 2 / 4 threads | measured speed-up, 2 threads |\n");
   std::printf("|---|---|---|---|---|---|---|\n");
   for (const Row& row : rows) {
     const Scene scene = loadScene(std::string("scenes/") + row.scene + ".json");
