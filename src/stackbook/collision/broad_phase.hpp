@@ -201,10 +201,11 @@ class KeptBroadPhase {
   std::vector<BodyPair> pairs(const std::vector<CollisionBody<D>>& bodies, const BroadPhaseSettings& settings,
                               DetectionCounters* counters = nullptr) {
     std::vector<BroadPhaseProxy<D>> proxies = broadPhaseProxies<D>(bodies);
-    detail::checkBroadPhaseInput<D>(proxies, settings, "KeptBroadPhase");
     bool anyEmpty = false;
     for (const BroadPhaseProxy<D>& p : proxies) anyEmpty = anyEmpty || p.box.isEmpty();
+    // Without slack (or with a bad one, which sweepAndPrune() reports) sweep and prune itself.
     if (!(settings.keepSlack > 0.0) || anyEmpty) return sweepAndPrune<D>(proxies, settings, counters);
+    detail::checkBroadPhaseInput<D>(proxies, settings, "KeptBroadPhase");
     std::int64_t tested = 0;
     if (!covers(proxies)) {
       made_ = proxies;
@@ -225,12 +226,14 @@ class KeptBroadPhase {
       kept_ = sweepAndPrune<D>(grown, settings, &sweep);
       tested += sweep.pairsTested;
     }
+    // Each box as sweepAndPrune() tests it, inflated by the margin, once per body.
+    std::vector<Aabb<D>> boxes;
+    boxes.reserve(proxies.size());
+    for (const BroadPhaseProxy<D>& p : proxies) boxes.push_back(p.box.inflated(settings.margin));
     std::vector<BodyPair> out;
     for (const BodyPair& p : kept_) {  // sorted by (i, j), as sweepAndPrune() reports
       ++tested;
-      const Aabb<D> a = proxies[static_cast<std::size_t>(p.first)].box.inflated(settings.margin);
-      const Aabb<D> b = proxies[static_cast<std::size_t>(p.second)].box.inflated(settings.margin);
-      if (a.overlaps(b)) out.push_back(p);
+      if (boxes[static_cast<std::size_t>(p.first)].overlaps(boxes[static_cast<std::size_t>(p.second)])) out.push_back(p);
     }
     if (counters != nullptr) {
       counters->pairsTested += tested;
