@@ -15,7 +15,7 @@
 // every STATE_HASH; one that only skips work may lower the detection counts (and so
 // change COUNTER_HASH) while the state stays the same bit for bit.
 //
-//   scene_hashes [--steps N] [--full-steps M] [--threads T] [--scenes DIR] [NAME ...]
+//   scene_hashes [--steps N] [--full-steps M] [--threads T] [--set KEY=VALUE ...] [--scenes DIR] [NAME ...]
 //
 //   --steps N       at most N steps per scene (default: each scene's own duration / dt)
 //   --full-steps M  steps for the full-size scenes (file names ending in "_full.json"),
@@ -23,6 +23,9 @@
 //   --threads T     run every scene with T threads (solver.threads; 0: every hardware
 //                   thread; default: the scene's own setting). The hashes must not depend on T
 //                   (chapter 10, "Threads")
+//   --set KEY=VALUE override a scene field in every scene, as `stackbook run --set` does
+//                   (repeatable): a setting that should change only the time, such as
+//                   solver.candidateReach, must keep every STATE_HASH
 //   --scenes DIR    the folder of scene files (default: the repository's scenes/)
 //   NAME ...        only these scenes (file stems)
 //
@@ -130,7 +133,8 @@ bool isFullSize(const fs::path& path) {
 }
 
 int usage(const char* program) {
-  std::cerr << "usage: " << program << " [--steps N] [--full-steps M] [--threads T] [--scenes DIR] [NAME ...]\n";
+  std::cerr << "usage: " << program
+            << " [--steps N] [--full-steps M] [--threads T] [--set KEY=VALUE ...] [--scenes DIR] [NAME ...]\n";
   return 2;
 }
 
@@ -146,6 +150,7 @@ int main(int argc, char** argv) {
 #endif
   int threads = -1;  // -1: the scene's own solver.threads
   std::vector<std::string> names;
+  std::vector<std::string> overrides;  // --set KEY=VALUE, as loadScene() takes them
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--steps" && i + 1 < argc) {
@@ -157,6 +162,8 @@ int main(int argc, char** argv) {
     } else if (arg == "--threads" && i + 1 < argc) {
       threads = std::atoi(argv[++i]);
       if (threads < 0 || threads > 1024) return usage(argv[0]);
+    } else if (arg == "--set" && i + 1 < argc) {
+      overrides.push_back(argv[++i]);
     } else if (arg == "--scenes" && i + 1 < argc) {
       scenes = argv[++i];
     } else if (!arg.empty() && arg[0] == '-') {
@@ -184,7 +191,7 @@ int main(int argc, char** argv) {
   for (const fs::path& file : files) {
     const std::string name = file.stem().string();
     try {
-      Scene scene = loadScene(file.string());
+      Scene scene = loadScene(file.string(), overrides);
       if (threads >= 0) scene.settings.parallel.threads = threads;
       std::int64_t steps = static_cast<std::int64_t>(std::ceil(scene.duration / scene.settings.dt - 1e-9));
       if (isFullSize(file)) steps = std::min(steps, fullSteps);

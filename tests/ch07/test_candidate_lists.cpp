@@ -101,6 +101,8 @@ TEST_CASE_TEMPLATE("candidate lists answer a moving pair as the loop over every 
   const BoxShape<D> peg = boxShape<D>(pegHalf, 8);
   const GridShape<D>& ring = ringForLists<D>();
   RandomSource rng(1207);
+  // Small moves are a twenty-fifth of the default reach fraction (in metres and radians).
+  const double smallStep = 0.04 * NarrowPhaseSettings{}.candidateReach;
   DetectionCounters boxes, rings;
   for (int trial = 0; trial < 30; ++trial) {
     RigidBody<D> lower = makeDynamicBody<D>(1.0, AngVec<D>::Constant(1.0));
@@ -108,11 +110,11 @@ TEST_CASE_TEMPLATE("candidate lists answer a moving pair as the loop over every 
     upper.position = Vec<D>((0.73 - rng.uniform(0.0, 0.03)) * Vec<D>::Unit(D - 1));
     upper.orientation = nudgedBy<D>(Orientation<D>::Identity(), rng.uniform(-0.3, 0.3), rng);
     lower.velocity = rng.vector<D>(-1.0, 1.0);
-    boxes += compareAsks<D>(slab, cube, lower, upper, 42, 2e-3, rng);
+    boxes += compareAsks<D>(slab, cube, lower, upper, 42, smallStep, rng);
     RigidBody<D> pegBody = makeStaticBody<D>();
     RigidBody<D> ringBody = makeDynamicBody<D>(1.0, AngVec<D>::Constant(1.0));
     ringBody.position = Vec<D>(rng.uniform(0.7, 0.8) * Vec<D>::Unit(0));  // the hole's rim on the peg
-    rings += compareAsks<D>(peg, ring, pegBody, ringBody, 42, 2e-3, rng);
+    rings += compareAsks<D>(peg, ring, pegBody, ringBody, 42, smallStep, rng);
   }
   // The lists answered most asks and were remade after the large moves, so the
   // comparison above covers both paths; they ask far fewer samples than the loop.

@@ -330,7 +330,7 @@ struct NarrowPhaseSettings {
   /// Exact for any value: the samples found, their order and their bits are those of the
   /// full loop. It needs a Lipschitz bound of the penetrated body's phi
   /// (Shape::distanceLipschitz()); against a shape without one the full loop runs.
-  double candidateReach = 0.05;
+  double candidateReach = 0.002;
 };
 
 namespace detail {
