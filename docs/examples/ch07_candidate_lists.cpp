@@ -7,6 +7,7 @@
 // two bundled nonconvex scenes (scenes/rings_on_pegs_3d.json, scenes/shapes_in_bin_2d.json) for
 // their whole duration with their own settings at three reaches (0, 0.05, and
 // the default): the same counts per step.
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -67,7 +68,7 @@ void row(const char* scene, const World<D>& start, const char* stepName, StepSet
 }
 
 /// One row of the second table: the scene's world stepped for its whole duration with its own
-/// settings and the given reach; `reference` is the world at reach 0, for the bits.
+/// settings and the given reach, left in `end` for the comparison of bits.
 template <int D>
 void reachRow(const std::string& name, const Scene& scene, double reach, World<D>& end) {
   StepSettings settings = scene.settings;
