@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "stackbook/collision/candidate_list_store.hpp"
 #include "stackbook/collision/narrow_phase.hpp"
 #include "stackbook/stepping/impulse_stage.hpp"
 #include "support/dimensions.hpp"
@@ -234,6 +235,33 @@ TEST_CASE_TEMPLATE("the narrow phase refuses a candidate reach that is negative 
   }
 }
 // [test_candidate_lists]
+
+TEST_CASE("a pair takes its kept lists in either body order and gives them back") {
+  CandidateListStore<2> store;
+  store.pairs = {{0, 1}, {1, 4}, {2, 3}};
+  store.lists.resize(3);
+  for (std::size_t k = 0; k < 3; ++k) {  // mark each list by its owner and penetrated body
+    store.lists[k].firstInSecond.t = Vec2(store.pairs[k].first, store.pairs[k].second);
+    store.lists[k].secondInFirst.t = Vec2(store.pairs[k].second, store.pairs[k].first);
+  }
+  PairCandidateLists<2> taken;
+  // As pair (4, 1), below before above as the pass names it: firstInSecond is 4's samples in 1.
+  REQUIRE(store.swapFor(4, 1, taken));
+  CHECK(taken.firstInSecond.t == Vec2(4.0, 1.0));
+  CHECK(taken.secondInFirst.t == Vec2(1.0, 4.0));
+  REQUIRE(store.swapFor(4, 1, taken));  // given back
+  CHECK(store.lists[1].firstInSecond.t == Vec2(1.0, 4.0));
+  CHECK(store.lists[1].secondInFirst.t == Vec2(4.0, 1.0));
+  REQUIRE(store.swapFor(2, 3, taken));
+  CHECK(taken.firstInSecond.t == Vec2(2.0, 3.0));
+  CHECK(taken.secondInFirst.t == Vec2(3.0, 2.0));
+  // A pair the store does not hold: nothing moves.
+  PairCandidateLists<2> other;
+  other.firstInSecond.t = Vec2(9.0, 9.0);
+  CHECK_FALSE(store.swapFor(0, 2, other));
+  CHECK_FALSE(store.swapFor(3, 4, other));
+  CHECK(other.firstInSecond.t == Vec2(9.0, 9.0));
+}
 
 TEST_CASE("a sweep's candidate lists are carried to the pairs of the next sweep by pair, new pairs start without") {
   // Each pair's lists are marked by their translation t = (first, second): a list that

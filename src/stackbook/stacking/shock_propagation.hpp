@@ -364,16 +364,23 @@ void shockPropagationPass(World<D>& world, const ContactGraph& graph, const Cont
     isolated[l] = isolatedLevel<D>(world, graph, levels, l) ? 1 : 0;
   }  // [shock_levels_loop]
   FreezeGuard<D> frozen(world);
+  CandidateListStore<D>& kept = world.candidateLists;  // chapter 7's lists, from the contact stage
+  kept.matchShapes(world.shapes);
   // The sweeps of level l with `levelSettings`, counted into `levelCounters`; `pairs` and
   // `lists` (chapter 7's candidate lists) are storage the caller keeps between levels.
   const auto sweepLevel = [&](std::size_t l, const StepSettings& levelSettings, StageCounters& levelCounters,
                               std::vector<BodyPair>& pairs, std::vector<PairCandidateLists<D>>& lists) {
     pairs.clear();
     for (const ContactPair& c : levels.pairs(l)) pairs.push_back(BodyPair{c.below, c.above});  // Eq. (9.2)
-    // No list of the last level answers for this one: mark them all unmade, keeping the
-    // vectors' capacity (a level's lists are made again at its first sweep).
+    // Each pair takes the lists the contact stage left for it (World::candidateLists), and
+    // gives them back after the level; a pair without kept lists starts with none. Levels
+    // have no pair in common, so levels swept at the same time take different entries.
     lists.resize(pairs.size());
-    for (PairCandidateLists<D>& kept : lists) kept.firstInSecond.made = kept.secondInFirst.made = false;
+    for (std::size_t p = 0; p < pairs.size(); ++p) {
+      if (!kept.swapFor(pairs[p].first, pairs[p].second, lists[p])) {
+        lists[p].firstInSecond.made = lists[p].secondInFirst.made = false;  // keeps the capacity
+      }
+    }
     StageSpec levelSpec = spec;
     double largest = 0.0;  // a level sweep's fastest approach (levelApproachTolerance)
     if (shock.levelApproachTolerance > 0.0) levelSpec.largestApproach = &largest;
@@ -384,6 +391,7 @@ void shockPropagationPass(World<D>& world, const ContactGraph& graph, const Cont
       if (sweepPairs<D>(world, views, pairs, levelSpec, s, settings.dt, levelSettings, levelCounters, &lists) == 0) break;
       if (shock.levelApproachTolerance > 0.0 && largest <= shock.levelApproachTolerance) break;
     }
+    for (std::size_t p = 0; p < pairs.size(); ++p) kept.swapFor(pairs[p].first, pairs[p].second, lists[p]);
   };
   std::vector<BodyPair> pairs;
   std::vector<PairCandidateLists<D>> lists;

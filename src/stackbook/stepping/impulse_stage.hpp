@@ -446,10 +446,15 @@ void runImpulseStage(World<D>& world, const StageSpec& spec, double dt,
   StageSpec measured = spec;
   double largest = 0.0;
   if (spec.stageApproachTolerance > 0.0) measured.largestApproach = &largest;
-  // Candidate lists (chapter 7) live for the stage: a pair the broad phase reports again in
-  // the next sweep keeps its lists (carryCandidateLists()).
+  // Candidate lists (chapter 7): the stage starts with the lists the world kept from the
+  // last stage, and a pair the broad phase reports again in the next sweep keeps its lists
+  // (carryCandidateLists()); at the end the stage's lists go back to the world.
+  CandidateListStore<D>& kept = world.candidateLists;
+  kept.matchShapes(world.shapes);
   std::vector<BodyPair> previousPairs;
   std::vector<PairCandidateLists<D>> lists, spare;
+  previousPairs.swap(kept.pairs);
+  lists.swap(kept.lists);
   // The broad phase's pairs at each sweep, found once and kept while they answer (chapter 7).
   KeptBroadPhase<D> broad;
   for (int sweep = 1; sweep <= spec.sweeps; ++sweep) {
@@ -459,6 +464,10 @@ void runImpulseStage(World<D>& world, const StageSpec& spec, double dt,
     largest = 0.0;
     if (sweepPairs<D>(world, views, pairs, measured, sweep, dt, settings, counters, &lists) == 0) break;
     if (spec.stageApproachTolerance > 0.0 && largest <= spec.stageApproachTolerance) break;
+  }
+  if (lists.size() == previousPairs.size()) {  // lists[k] belongs to previousPairs[k]
+    kept.pairs.swap(previousPairs);
+    kept.lists.swap(lists);
   }
   counters.seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -16,6 +16,7 @@
 
 #include "stackbook/body/integrate.hpp"
 #include "stackbook/body/rigid_body.hpp"
+#include "stackbook/collision/candidate_list_store.hpp"
 #include "stackbook/geometry/shape.hpp"
 
 namespace stackbook {
@@ -75,6 +76,10 @@ struct World {
   /// sleeping ignores them.
   std::vector<double> restTime;
   std::vector<char> asleep;
+  /// Candidate lists (chapter 7, "Keeping lists between stages") that the impulse stages and
+  /// the shock-propagation pass hand on to the next stage and the next step. They change how
+  /// much work a query does, never its answer; empty until a step with candidate lists.
+  CandidateListStore<D> candidateLists;
 
   /// Append a body and return its index.
   int addBody(const RigidBody<D>& body, std::shared_ptr<const Shape<D>> shape,
