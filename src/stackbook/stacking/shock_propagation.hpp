@@ -364,7 +364,7 @@ void shockPropagationPass(World<D>& world, const ContactGraph& graph, const Cont
     isolated[l] = isolatedLevel<D>(world, graph, levels, l) ? 1 : 0;
   }  // [shock_levels_loop]
   FreezeGuard<D> frozen(world);
-  CandidateListStore<D>& kept = world.candidateLists;  // chapter 7's lists, from the contact stage
+  CandidateListStore<D>& kept = world.candidateLists;  // chapter 7's lists, from the last stage
   kept.matchShapes(world.shapes);
   // The sweeps of level l with `levelSettings`, counted into `levelCounters`; `pairs` and
   // `lists` (chapter 7's candidate lists) are storage the caller keeps between levels.
@@ -372,7 +372,7 @@ void shockPropagationPass(World<D>& world, const ContactGraph& graph, const Cont
                               std::vector<BodyPair>& pairs, std::vector<PairCandidateLists<D>>& lists) {
     pairs.clear();
     for (const ContactPair& c : levels.pairs(l)) pairs.push_back(BodyPair{c.below, c.above});  // Eq. (9.2)
-    // Each pair takes the lists the contact stage left for it (World::candidateLists), and
+    // Each pair takes the lists the last stage left for it (World::candidateLists), and
     // gives them back after the level; a pair without kept lists starts with none. Levels
     // have no pair in common, so levels swept at the same time take different entries.
     lists.resize(pairs.size());
