@@ -9,7 +9,8 @@
 // analytic answer is 0), the mirror error of a 2D pyramid (max |x_i + x_mirror(i)|), the sag
 // of a stack's top box, the largest speed left, the time per step and the impulses per step.
 // Rows 8-22 look for a setting of GBF's step (the contact stage, then the pass) that holds a
-// pyramid as still at 60 Hz as the pass as the contact stage (rows 4-7) does.
+// pyramid as still at 60 Hz as the pass as the contact stage (rows 4-7) does. Rows 23-25 try
+// the pass without its restitution ramp, and chapter 8's centre rule, with and without it.
 // Build in release mode:
 //   cmake --preset release && cmake --build --preset release --target loop_tolerance_bench
 //   ./build/release/bench/loop_tolerance_bench pyramid2d 20 10 0.0166666667
@@ -117,6 +118,18 @@ int main(int argc, char** argv) {
     s.contactIterations = sweeps;
     return s;
   };
+  // Rows 23-25: chapter 8's impulse point at the centre of the samples that share a normal,
+  // and the pass without its restitution ramp (every level sweep with e = 0), which ends a
+  // level once a sweep acts on nothing faster than 1e-9 m/s.
+  const auto centre = [](StepSettings s) {
+    s.impulsePoint.rule = ImpulsePointRule::DepthWeightedCentre;
+    return s;
+  };
+  const auto noRamp = [](StepSettings s) {
+    s.shock.restitution.assign(static_cast<std::size_t>(s.shock.sweepsPerLevel), 0.0);
+    s.shock.levelApproachTolerance = 1e-9;
+    return s;
+  };
   const Row rows[] = {
       {"GBF: contact stage, then the pass", gbf},
       {"GBF, pair loops capped at 2", capped(gbf, 2)},
@@ -140,6 +153,11 @@ int main(int argc, char** argv) {
       {"GBF, one cone per step, 20 sweeps per level, capped at 2, 2 contact sweeps", withContact(capped(gbfBoth, 2), 2)},
       {"GBF, one cone per step, 40 sweeps per level, capped at 2, 5 contact sweeps", withContact(capped(gbfBoth40, 2), 5)},
       {"GBF, one cone per step, 20 sweeps per level, capped at 2, 1 contact sweep", withContact(capped(gbfBoth, 2), 1)},
+      {"the pass as the contact stage, capped at 2, no ramp (e = 0), level tolerance 1e-9 m/s",
+       noRamp(capped(pass, 2))},
+      {"the pass as the contact stage, centre rule, capped at 1", centre(capped(pass, 1))},
+      {"the pass as the contact stage, centre rule, capped at 1, no ramp (e = 0), level tolerance 1e-9 m/s",
+       noRamp(centre(capped(pass, 1)))},
   };
   const int count = static_cast<int>(sizeof rows / sizeof rows[0]);
   const int last = argc > 6 ? std::atoi(argv[6]) : count;

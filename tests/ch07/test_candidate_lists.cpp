@@ -45,15 +45,18 @@ const GridShape<D>& ringForLists() {
 /// from ask to ask and once with none, and checks that every answer and every candidate is
 /// the same, bit for bit. Between asks body 1 moves by a small step (at most `step`), and
 /// every 7th ask by a large one (10 times the list's reach), which forces the lists to be
-/// remade. Returns the counters of the asks with lists.
+/// remade. The pair's whole interference is compared too: pairInterferenceListed() with
+/// lists of its own, kept likewise, against pairInterference(), sample for sample (its
+/// counters go to `whole`). Returns the counters of the deepest-sample asks with lists.
 template <int D>
 DetectionCounters compareAsks(const Shape<D>& shapeA, const Shape<D>& shapeB, RigidBody<D> a, RigidBody<D> b,
-                              int asks, double step, RandomSource& rng) {
+                              int asks, double step, RandomSource& rng, DetectionCounters& whole) {
   NarrowPhaseSettings plain;
   plain.candidateReach = 0.0;
   const NarrowPhaseSettings listed;  // the default reach
-  PairCandidateLists<D> lists;
-  std::vector<InterferenceCandidate<D>> withLists, without;
+  PairCandidateLists<D> lists, wholeLists;
+  std::vector<InterferenceCandidate<D>> withLists, without, wholeScratch;
+  std::vector<InterferenceSample<D>> wholeListed;
   DetectionCounters counters;
   const Vec<D> centre = b.position;
   for (int ask = 0; ask < asks; ++ask) {
@@ -81,6 +84,17 @@ DetectionCounters compareAsks(const Shape<D>& shapeA, const Shape<D>& shapeB, Ri
       CHECK(withLists[k].depth == without[k].depth);
       CHECK(withLists[k].inPenetrated == without[k].inPenetrated);
     }
+    pairInterferenceListed<D>(bodies, BodyPair{0, 1}, listed, &whole, wholeScratch, wholeListed, &wholeLists);
+    const std::vector<InterferenceSample<D>> full = pairInterference<D>(bodies, BodyPair{0, 1}, plain);
+    REQUIRE(wholeListed.size() == full.size());
+    for (std::size_t k = 0; k < full.size(); ++k) {
+      CHECK(wholeListed[k].sampleIndex == full[k].sampleIndex);
+      CHECK(wholeListed[k].owner == full[k].owner);
+      CHECK(wholeListed[k].other == full[k].other);
+      CHECK(wholeListed[k].depth == full[k].depth);  // the same operations: the same bits
+      CHECK(wholeListed[k].point == full[k].point);
+      CHECK(wholeListed[k].normal == full[k].normal);
+    }
   }
   return counters;
 }
@@ -104,22 +118,22 @@ TEST_CASE_TEMPLATE("candidate lists answer a moving pair as the loop over every 
   RandomSource rng(1207);
   // Small moves are a twenty-fifth of the default reach fraction (in metres and radians).
   const double smallStep = 0.04 * NarrowPhaseSettings{}.candidateReach;
-  DetectionCounters boxes, rings;
+  DetectionCounters boxes, rings, boxesWhole, ringsWhole;
   for (int trial = 0; trial < 30; ++trial) {
     RigidBody<D> lower = makeDynamicBody<D>(1.0, AngVec<D>::Constant(1.0));
     RigidBody<D> upper = makeDynamicBody<D>(1.0, AngVec<D>::Constant(1.0));
     upper.position = Vec<D>((0.73 - rng.uniform(0.0, 0.03)) * Vec<D>::Unit(D - 1));
     upper.orientation = nudgedBy<D>(Orientation<D>::Identity(), rng.uniform(-0.3, 0.3), rng);
     lower.velocity = rng.vector<D>(-1.0, 1.0);
-    boxes += compareAsks<D>(slab, cube, lower, upper, 42, smallStep, rng);
+    boxes += compareAsks<D>(slab, cube, lower, upper, 42, smallStep, rng, boxesWhole);
     RigidBody<D> pegBody = makeStaticBody<D>();
     RigidBody<D> ringBody = makeDynamicBody<D>(1.0, AngVec<D>::Constant(1.0));
     ringBody.position = Vec<D>(rng.uniform(0.7, 0.8) * Vec<D>::Unit(0));  // the hole's rim on the peg
-    rings += compareAsks<D>(peg, ring, pegBody, ringBody, 42, smallStep, rng);
+    rings += compareAsks<D>(peg, ring, pegBody, ringBody, 42, smallStep, rng, ringsWhole);
   }
   // The lists answered most asks and were remade after the large moves, so the
   // comparison above covers both paths; they ask far fewer samples than the loop.
-  for (const DetectionCounters* c : {&boxes, &rings}) {
+  for (const DetectionCounters* c : {&boxes, &rings, &boxesWhole, &ringsWhole}) {
     CHECK(c->listedQueries > c->candidateListsMade);
     CHECK(c->candidateListsMade >= 2 * 30 * 5);  // both directions, remade after (nearly) every large move
     CHECK(c->interferenceSamples > 0);

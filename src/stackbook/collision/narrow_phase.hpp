@@ -783,6 +783,75 @@ std::optional<InterferenceSample<D>> deepestApproachingInPair(
 }
 // [deepest_approaching_lazy]
 
+// [pair_interference_listed]
+/// pairInterference() through the pair's candidate lists (Eq. (7.12)): the same samples,
+/// in the same order and with the same bits, written to `out` (cleared first), with the
+/// phi queries of the lists instead of every sample's. The candidates are found as
+/// deepestApproachingInPair() finds them (`scratch` holds them); each then gets its world
+/// point and normal by the operations appendSamplesInside() uses, in the same order
+/// (first's samples inside second, then second's inside first). It is what a rule needing
+/// every sample (chapter 8's centre, Eq. (8.10)) asks when the step keeps lists; `lists`
+/// may be null (the full loop, as pairInterference()). Surface samples only: under
+/// SurfaceQuery::DeepestPoint the caller asks pairInterference().
+template <int D>
+void pairInterferenceListed(const std::vector<CollisionBody<D>>& bodies, const BodyPair& pair,
+                            const NarrowPhaseSettings& settings, DetectionCounters* counters,
+                            std::vector<InterferenceCandidate<D>>& scratch, std::vector<InterferenceSample<D>>& out,
+                            PairCandidateLists<D>* lists = nullptr) {
+  const int n = static_cast<int>(bodies.size());
+  if (pair.first < 0 || pair.first >= n || pair.second < 0 || pair.second >= n || pair.first == pair.second) {
+    std::ostringstream msg;
+    msg << "pairInterferenceListed: pair (" << pair.first << ", " << pair.second
+        << ") must name two different bodies among " << n;
+    throw std::invalid_argument(msg.str());
+  }
+  const CollisionBody<D>& a = bodies[static_cast<std::size_t>(pair.first)];
+  const CollisionBody<D>& b = bodies[static_cast<std::size_t>(pair.second)];
+  if (a.shape == nullptr || b.shape == nullptr) {
+    std::ostringstream msg;
+    msg << "pairInterferenceListed: body " << (a.shape == nullptr ? pair.first : pair.second)
+        << " has no Shape (shape is null)";
+    throw std::invalid_argument(msg.str());
+  }
+  if (!std::isfinite(settings.cullMargin) || settings.cullMargin < 0.0) {
+    std::ostringstream msg;
+    msg << "appendSamplesInside: settings.cullMargin must be finite and >= 0, got " << settings.cullMargin;
+    throw std::invalid_argument(msg.str());
+  }
+  if (!std::isfinite(settings.candidateReach) || settings.candidateReach < 0.0) {
+    std::ostringstream msg;
+    msg << "pairInterferenceListed: settings.candidateReach must be finite and >= 0, got "
+        << settings.candidateReach;
+    throw std::invalid_argument(msg.str());
+  }
+  detail::checkPose<D>(a.pose, pair.first, "appendSamplesInside");
+  detail::checkPose<D>(b.pose, pair.second, "appendSamplesInside");
+  const Mat<D> Ra = a.poseRotation();
+  const Mat<D> Rb = b.poseRotation();
+  scratch.clear();
+  detail::appendCandidatesInside<D>(a, Ra, b, Rb, pair.second, true, scratch, settings, counters,
+                                    lists != nullptr ? &lists->firstInSecond : nullptr);
+  detail::appendCandidatesInside<D>(b, Rb, a, Ra, pair.first, false, scratch, settings, counters,
+                                    lists != nullptr ? &lists->secondInFirst : nullptr);
+  if (counters != nullptr) ++counters->pairQueries;
+  out.clear();
+  for (const InterferenceCandidate<D>& c : scratch) {  // in pairInterference()'s order
+    const CollisionBody<D>& owner = c.firstOwns ? a : b;
+    const CollisionBody<D>& other = c.firstOwns ? b : a;
+    InterferenceSample<D> s;
+    s.point = detail::poseToWorld<D>(owner.pose, c.firstOwns ? Ra : Rb,
+                                     owner.shape->surfaceSamples()[static_cast<std::size_t>(c.sampleIndex)]);
+    s.depth = c.depth;
+    s.normal = detail::poseDirectionToWorld<D>(other.pose, c.firstOwns ? Rb : Ra,
+                                               other.shape->normal(c.inPenetrated));  // Eq. (7.3)
+    s.owner = c.firstOwns ? pair.first : pair.second;
+    s.other = c.firstOwns ? pair.second : pair.first;
+    s.sampleIndex = c.sampleIndex;
+    out.push_back(s);
+  }
+}
+// [pair_interference_listed]
+
 /// The samples of one pair that interfere, with the pair they belong to.
 template <int D>
 struct PairInterference {

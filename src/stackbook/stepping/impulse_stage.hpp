@@ -123,18 +123,24 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
   // The candidates of the lazy deepest-sample search, kept across calls (one buffer per
   // thread), so that a pair query allocates nothing once the buffer has grown.
   thread_local std::vector<InterferenceCandidate<D>> scratch;
+  thread_local std::vector<InterferenceSample<D>> samples;  // the centre rule's, reused likewise
   double firstImpulse = 0.0;  // |j| of the visit's first impulse (pairImpulseTolerance)
   for (int iteration = 0; iteration < spec.pairIterations; ++iteration) {
     // GBF's rule needs normals only until the deepest approaching sample is found: the
     // lazy search picks the same sample with the same bits (chapter 7). The centre rule
-    // needs every sample's normal, and the exact deepest points of chapter 11 are found
-    // by pairInterference() alone.  // [pair_deepest_impulse]
-    const std::optional<InterferenceSample<D>> point =
-        settings.impulsePoint.rule == ImpulsePointRule::Deepest &&
-                settings.detection.narrow.surfaceQuery == SurfaceQuery::Samples
-            ? deepestApproachingInPair<D>(views, pair, settings.detection.narrow, &counters.detection, scratch, lists)
-            : impulsePoint<D>(pairInterference<D>(views, pair, settings.detection.narrow, &counters.detection),
+    // needs every sample's normal; it asks through the same candidate lists, which give
+    // pairInterference()'s samples with the same bits. The exact deepest points of chapter
+    // 11 are found by pairInterference() alone.  // [pair_deepest_impulse]
+    std::optional<InterferenceSample<D>> point;
+    if (settings.detection.narrow.surfaceQuery != SurfaceQuery::Samples) {
+      point = impulsePoint<D>(pairInterference<D>(views, pair, settings.detection.narrow, &counters.detection),
                               views, settings.impulsePoint);  // Eqs. (7.6), (8.10)
+    } else if (settings.impulsePoint.rule == ImpulsePointRule::Deepest) {
+      point = deepestApproachingInPair<D>(views, pair, settings.detection.narrow, &counters.detection, scratch, lists);
+    } else {
+      pairInterferenceListed<D>(views, pair, settings.detection.narrow, &counters.detection, scratch, samples, lists);
+      point = impulsePoint<D>(samples, views, settings.impulsePoint);  // Eq. (8.10)
+    }
     if (!point) return applied;
     const InterferenceSample<D>& s = *point;
     RigidBody<D>& owner = world.bodies[static_cast<std::size_t>(s.owner)];
