@@ -11,6 +11,8 @@
 // Rows 8-22 look for a setting of GBF's step (the contact stage, then the pass) that holds a
 // pyramid as still at 60 Hz as the pass as the contact stage (rows 4-7) does. Rows 23-25 try
 // the pass without its restitution ramp, and chapter 8's centre rule, with and without it.
+// Rows 26-28 try chapter 8's sticking patch in the pass's short loops, without and with the
+// level tolerance that passAsContactStagePatch() sets, and with pair caps of 2 and no ramp.
 // Build in release mode:
 //   cmake --preset release && cmake --build --preset release --target loop_tolerance_bench
 //   ./build/release/bench/loop_tolerance_bench pyramid2d 20 10 0.0166666667
@@ -125,6 +127,10 @@ int main(int argc, char** argv) {
     s.impulsePoint.rule = ImpulsePointRule::DepthWeightedCentre;
     return s;
   };
+  const auto patch = [](StepSettings s) {
+    s.impulsePoint.rule = ImpulsePointRule::StickingPatch;
+    return s;
+  };
   const auto noRamp = [](StepSettings s) {
     s.shock.restitution.assign(static_cast<std::size_t>(s.shock.sweepsPerLevel), 0.0);
     s.shock.levelApproachTolerance = 1e-9;
@@ -158,6 +164,13 @@ int main(int argc, char** argv) {
       {"the pass as the contact stage, centre rule, capped at 1", centre(capped(pass, 1))},
       {"the pass as the contact stage, centre rule, capped at 1, no ramp (e = 0), level tolerance 1e-9 m/s",
        noRamp(centre(capped(pass, 1)))},
+      {"the pass as the contact stage, short loops, sticking patch, no level tolerance",
+       patch(passAsContactStageShortLoops())},
+      {"the pass as the contact stage, short loops, sticking patch, level tolerance 1e-9 m/s "
+       "(passAsContactStagePatch())",
+       passAsContactStagePatch()},
+      {"the pass as the contact stage, capped at 2, sticking patch, no ramp (e = 0), level tolerance 1e-9 m/s",
+       noRamp(patch(capped(pass, 2)))},
   };
   const int count = static_cast<int>(sizeof rows / sizeof rows[0]);
   const int last = argc > 6 ? std::atoi(argv[6]) : count;

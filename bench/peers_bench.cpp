@@ -166,8 +166,8 @@ int main(int argc, char** argv) {
     }
   }
   // Every column name the table can have: --engines takes these (a filter, e.g. for profiling one engine).
-  const std::vector<std::string> engineNames{"stackbook", "stackbook pass", "stackbook short", "stackbook short corners",
-                                             "Box2D", "Bullet", "stackbook colours", "stackbook gbf short",
+  const std::vector<std::string> engineNames{"stackbook", "stackbook pass", "stackbook short", "stackbook patch",
+                                             "stackbook short corners", "Box2D", "Bullet", "stackbook colours", "stackbook gbf short",
                                              "stackbook gbf short colours"};
   for (const std::string& name : engines) {
     if (std::find(engineNames.begin(), engineNames.end(), name) == engineNames.end()) {
@@ -262,6 +262,7 @@ int main(int argc, char** argv) {
       add("stackbook", false, [s] { return makeStackbookBoxes(s, stackbook::SolverPreset::Gbf); });
       add("stackbook pass", false, [s] { return makeStackbookBoxes(s, stackbook::SolverPreset::PassAsContact); });
       add("stackbook short", false, [s] { return makeStackbookBoxes(s, stackbook::SolverPreset::PassAsContactShortLoops); });
+      add("stackbook patch", false, [s] { return makeStackbookBoxes(s, stackbook::SolverPreset::PassAsContactPatch); });
       if (corners) {  // the same preset on boxes sampled at their corners only
         BoxScene c = s;
         c.stackbookBoxSubdivisions = 1;

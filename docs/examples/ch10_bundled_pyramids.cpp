@@ -1,8 +1,9 @@
 // Chapter 10, "The bundled pyramids": scenes/pyramid_20_2d.json and scenes/pyramid_3d.json
-// run for their whole duration at their dt (1/60 s) under three steps: GBF's (its default
+// run for their whole duration at their dt (1/60 s) under four steps: GBF's (its default
 // settings, the pass after the contact stage), the pass as the contact stage
-// (passAsContactStage()) and the short pair loops the scenes name
-// (passAsContactStageShortLoops(), "preset": "passAsContactShortLoops"). Prints one Markdown
+// (passAsContactStage()), the short pair loops the scenes name
+// (passAsContactStageShortLoops(), "preset": "passAsContactShortLoops") and those with
+// sticking patches (passAsContactStagePatch(), "preset": "passAsContactPatch"). Prints one Markdown
 // row per scene and step: the largest horizontal drift and the largest speed of any box at
 // the end, the milliseconds and impulses per step (one thread, on the machine that built
 // the site).
@@ -69,6 +70,7 @@ int main() {
     gbf.parallel.threads = 1;
     const StepSettings pass = passAsContactStage(gbf);
     const StepSettings shortLoops = passAsContactStageShortLoops(gbf);
+    const StepSettings patch = passAsContactStagePatch(gbf);
     // The scene names the preset: its settings must be the short loops'.
     if (!(scene.settings.shock.replacesContactStage &&
           scene.settings.shock.pairIterations == shortLoops.shock.pairIterations &&
@@ -84,7 +86,8 @@ int main() {
       const StepSettings* settings;
     } steps[] = {{"GBF's step (defaults)", &gbf},
                  {"pass as the contact stage, `passAsContactStage()`", &pass},
-                 {"short pair loops, `passAsContactStageShortLoops()` (the scene's preset)", &shortLoops}};
+                 {"short pair loops, `passAsContactStageShortLoops()` (the scene's preset)", &shortLoops},
+                 {"sticking patches, `passAsContactStagePatch()`", &patch}};
     for (const auto& s : steps) {
       const Outcome o = run(scene, *s.settings);
       std::printf("| `%s.json` | %s | %.2e | %.2e | %.2f | %.0f |\n", name, s.label, o.drift, o.speed, o.msPerStep,
@@ -92,7 +95,7 @@ int main() {
     }
   }
   std::printf("\nTable: the bundled pyramids (210 boxes in 2D, 30 in 3D, mu = 0.6) at dt = 1/60 s for %.0f s "
-              "under three steps; drift and speed after the run, one thread.\n",
+              "under four steps; drift and speed after the run, one thread.\n",
               seconds);
   return 0;
 }

@@ -193,7 +193,19 @@ TEST_CASE("each solver preset is the settings function it names, and its word na
   CHECK(loops.shock.pairIterations == 5);
   CHECK(loops.collisionPairIterations == 5);
   CHECK(loops.pairImpulseTolerance == 0.2);
-  for (const StepSettings* s : {&gbf, &pass, &loops}) {  // base's other fields are kept
+  CHECK(loops.impulsePoint.rule == ImpulsePointRule::Deepest);
+  const StepSettings patch = applySolverPreset(SolverPreset::PassAsContactPatch, base);
+  CHECK(patch.shock.replacesContactStage);
+  CHECK(patch.shock.pairIterations == 5);
+  CHECK(patch.impulsePoint.rule == ImpulsePointRule::StickingPatch);
+  CHECK(patch.shock.levelApproachTolerance == 1e-9);
+  // A preset means the same settings whatever base came from: the patch preset's own fields
+  // are put back when another preset is applied to its settings.
+  const StepSettings back = applySolverPreset(SolverPreset::PassAsContactShortLoops, patch);
+  CHECK(back.impulsePoint.rule == ImpulsePointRule::Deepest);
+  CHECK(back.shock.levelApproachTolerance == 0.0);
+  CHECK_THROWS_AS(passAsContactStagePatch(StepSettings{}, -1.0), std::invalid_argument);
+  for (const StepSettings* s : {&gbf, &pass, &loops, &patch}) {  // base's other fields are kept
     CHECK(s->dt == base.dt);
     CHECK(s->parallel.threads == 3);
   }
@@ -204,7 +216,8 @@ TEST_CASE("each solver preset is the settings function it names, and its word na
   }
   CHECK_FALSE(solverPresetNamed("GBF").has_value());  // the words are case-sensitive
   CHECK_FALSE(solverPresetNamed("").has_value());
-  CHECK(solverPresetWords() == "\"gbf\", \"passAsContact\", \"passAsContactShortLoops\" or \"gbfShortLoops\"");
+  CHECK(solverPresetWords() ==
+        "\"gbf\", \"passAsContact\", \"passAsContactShortLoops\", \"gbfShortLoops\" or \"passAsContactPatch\"");
 }
 
 }  // TEST_SUITE

@@ -23,6 +23,11 @@ enum class ImpulsePointRule {
   /// `normalCosine` of the deepest one's (Eq. (8.10)): one sample gives GBF's point, a
   /// flat face gives its middle, a tilting face leans to its deep side continuously.
   DepthWeightedCentre,
+  /// The sticking patch (chapter 8, "A whole patch at once", Eq. (8.16)): when the pair
+  /// touches along a patch of samples that share the deepest one's normal, one impulse and
+  /// one angular impulse stop the pair's whole relative motion, if friction and the patch
+  /// can carry them (Eqs. (8.18), (8.19)); otherwise GBF's deepest sample, as Deepest.
+  StickingPatch,
 };
 
 struct ImpulsePointSettings {
@@ -44,7 +49,8 @@ inline void validateImpulsePointSettings(const ImpulsePointSettings& s, const ch
 
 // [impulse_point]
 /// The sample one impulse of the pair acts at, or empty when no sample approaches.
-/// Deepest: deepestApproachingSample(). DepthWeightedCentre: with n the deepest
+/// Deepest (and StickingPatch, whose single point is GBF's): deepestApproachingSample().
+/// DepthWeightedCentre: with n the deepest
 /// approaching sample's normal, the centre p = sum w_i p_i / sum w_i over the approaching
 /// samples i whose normal, turned to the deepest sample's owner, lies within
 /// normalCosine of n, with weights w_i = -phi_i, the depth (Eq. (8.10)). The result keeps
@@ -57,7 +63,7 @@ std::optional<InterferenceSample<D>> impulsePoint(const std::vector<Interference
                                                   const std::vector<CollisionBody<D>>& bodies,
                                                   const ImpulsePointSettings& settings) {
   const std::optional<InterferenceSample<D>> deepest = deepestApproachingSample<D>(samples, bodies);
-  if (!deepest || settings.rule == ImpulsePointRule::Deepest) return deepest;
+  if (!deepest || settings.rule != ImpulsePointRule::DepthWeightedCentre) return deepest;
   Vec<D> weighted = Vec<D>::Zero();
   double total = 0.0;
   int members = 0;

@@ -177,8 +177,17 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
     s.order = choose("order", "gbf", StepOrder::Gbf, "traditional", StepOrder::Traditional);
   }
   if (member(solver, "impulsePoint")) {
-    s.impulsePoint.rule = choose("impulsePoint", "deepest", ImpulsePointRule::Deepest, "centre",
-                                 ImpulsePointRule::DepthWeightedCentre);
+    const std::string ptr = p + "/impulsePoint";
+    const std::string word = r.string(*member(solver, "impulsePoint"), ptr);
+    if (word == "deepest") {
+      s.impulsePoint.rule = ImpulsePointRule::Deepest;
+    } else if (word == "centre") {
+      s.impulsePoint.rule = ImpulsePointRule::DepthWeightedCentre;
+    } else if (word == "patch") {
+      s.impulsePoint.rule = ImpulsePointRule::StickingPatch;
+    } else {
+      r.fail(ptr, "must be \"deepest\", \"centre\" or \"patch\", got \"" + word + "\"");
+    }
   }
   if (member(solver, "rotation")) {
     s.rotation = choose("rotation", "exponentialMap", RotationUpdate::ExponentialMap, "implicitMidpoint",

@@ -128,6 +128,7 @@ json stageJson(const StageCounters& s) {
               {"sliding", s.sliding},
               {"elastic", s.elasticImpulses},
               {"rolling", s.rollingImpulses},
+              {"patches", s.patchImpulses},
               {"pairIterationCapHits", s.pairIterationCapHits},
               {"islandSweeps", s.islandSweeps},
               {"pairQueries", s.detection.pairQueries},

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <exception>
 #include <span>
@@ -545,6 +546,25 @@ inline StepSettings passAsContactStageShortLoops(StepSettings base = {}, int swe
   return base;
 }
 // [pass_short_loops_settings]
+
+// [pass_patch_settings]
+/// The pass as the contact stage with sticking patches (chapter 8, "A whole patch at once"):
+/// passAsContactStageShortLoops() with ImpulsePointRule::StickingPatch in every stage, so a
+/// pair touching along a face that friction can hold gets one impulse that stops it, and a
+/// level's sweeps end once a sweep acts on no approach faster than `levelApproachTolerance`
+/// (default 1e-9 m/s: round-off left by a patch impulse, which the sweeps would otherwise
+/// chase through every sweep of the ramp). Pairs the patch cannot hold (sliding, tipping,
+/// bouncing) are resolved at their deepest sample as before.
+inline StepSettings passAsContactStagePatch(StepSettings base = {}, double levelApproachTolerance = 1e-9) {
+  if (!(levelApproachTolerance >= 0.0) || !std::isfinite(levelApproachTolerance)) {
+    throw std::invalid_argument("passAsContactStagePatch: levelApproachTolerance must be finite and >= 0");
+  }
+  base = passAsContactStageShortLoops(base);
+  base.impulsePoint.rule = ImpulsePointRule::StickingPatch;
+  base.shock.levelApproachTolerance = levelApproachTolerance;
+  return base;
+}
+// [pass_patch_settings]
 
 // [gbf_short_loops_settings]
 /// GBF's step with short pair loops (chapter 9, "Short pair loops in GBF's step"): the

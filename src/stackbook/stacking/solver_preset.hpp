@@ -20,20 +20,22 @@ enum class SolverPreset {
   Gbf,                     ///< GBF's step with shock propagation: StepSettings{} (chapters 8 and 9)
   PassAsContact,           ///< the pass as the contact stage: passAsContactStage()
   PassAsContactShortLoops,  ///< that with short pair loops: passAsContactStageShortLoops()
-  GbfShortLoops             ///< GBF's step with short pair loops: gbfStepShortLoops()
+  GbfShortLoops,            ///< GBF's step with short pair loops: gbfStepShortLoops()
+  PassAsContactPatch        ///< the pass as the contact stage with sticking patches: passAsContactStagePatch()
 };
 
 /// Every preset with the word a scene names it by, in the order the scene format lists them.
-inline constexpr std::array<std::pair<SolverPreset, std::string_view>, 4> kSolverPresets{{
+inline constexpr std::array<std::pair<SolverPreset, std::string_view>, 5> kSolverPresets{{
     {SolverPreset::Gbf, "gbf"},
     {SolverPreset::PassAsContact, "passAsContact"},
     {SolverPreset::PassAsContactShortLoops, "passAsContactShortLoops"},
     {SolverPreset::GbfShortLoops, "gbfShortLoops"},
+    {SolverPreset::PassAsContactPatch, "passAsContactPatch"},
 }};
 
 /// `base` with every field a preset sets put back to GBF's, StepSettings{}'s: the pair caps
 /// and loop tolerances of the three loops, whether the pass replaces the contact stage, its
-/// sweeps and ramp, and the cone rule. Every preset starts from this, so a preset means the
+/// sweeps, ramp and level tolerance, the cone rule and the impulse point rule. Every preset starts from this, so a preset means the
 /// same settings whatever `base` came from (a scene that names one preset, timed under another).
 inline StepSettings withGbfLoops(StepSettings base) {
   const StepSettings gbf;
@@ -46,6 +48,8 @@ inline StepSettings withGbfLoops(StepSettings base) {
   base.shock.pairIterations = gbf.shock.pairIterations;
   base.shock.restitution = gbf.shock.restitution;
   base.shock.pairImpulseTolerance = gbf.shock.pairImpulseTolerance;
+  base.shock.levelApproachTolerance = gbf.shock.levelApproachTolerance;
+  base.impulsePoint.rule = gbf.impulsePoint.rule;
   return base;
 }
 
@@ -57,6 +61,7 @@ inline StepSettings applySolverPreset(SolverPreset preset, StepSettings base) {
     case SolverPreset::PassAsContact: return passAsContactStage(base);
     case SolverPreset::PassAsContactShortLoops: return passAsContactStageShortLoops(base);
     case SolverPreset::GbfShortLoops: return gbfStepShortLoops(base);
+    case SolverPreset::PassAsContactPatch: return passAsContactStagePatch(base);
     case SolverPreset::Gbf: break;
   }
   return base;

@@ -23,6 +23,7 @@
 #include "stackbook/collision/narrow_phase.hpp"
 #include "stackbook/impulse/collision_matrix.hpp"
 #include "stackbook/impulse/frictional_impulse.hpp"
+#include "stackbook/impulse/patch_impulse.hpp"
 #include "stackbook/impulse/rolling_friction.hpp"
 #include "stackbook/stepping/contact_ledger.hpp"
 #include "stackbook/stepping/contact_recorder.hpp"
@@ -125,6 +126,34 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
   thread_local std::vector<InterferenceCandidate<D>> scratch;
   thread_local std::vector<InterferenceSample<D>> samples;  // the centre rule's, reused likewise
   double firstImpulse = 0.0;  // |j| of the visit's first impulse (pairImpulseTolerance)
+  // After each impulse of size `magnitude`: re-predict the pair, and say whether the visit
+  // has converged.
+  const auto repredict = [&](int iteration, double magnitude) {
+    // Re-predict the pair's dynamic bodies. A static body's tested pose cannot change (no
+    // impulse moves it), so it is left alone: the views of static bodies stay constant
+    // for the whole sweep, which is what lets islands run at the same time (chapter 10).
+    if (!world.bodies[static_cast<std::size_t>(pair.first)].isStatic()) {
+      views[static_cast<std::size_t>(pair.first)].setPose(
+          testedPose<D>(world, pair.first, spec.lookahead, dt, settings.rotation));
+    }
+    if (!world.bodies[static_cast<std::size_t>(pair.second)].isStatic()) {
+      views[static_cast<std::size_t>(pair.second)].setPose(
+          testedPose<D>(world, pair.second, spec.lookahead, dt, settings.rotation));
+    }
+    // [pair_converged]
+    // The loop has converged when an impulse is a small fraction of the visit's first one
+    // (chapter 8, "Ending the loops"); off (0), GBF's loop runs to separation or the cap.
+    if (spec.pairImpulseTolerance > 0.0) {
+      if (iteration == 0) {
+        firstImpulse = magnitude;
+      } else if (magnitude <= spec.pairImpulseTolerance * firstImpulse) {
+        ++counters.pairConvergences;
+        return true;
+      }
+    }
+    // [pair_converged]
+    return false;
+  };
   for (int iteration = 0; iteration < spec.pairIterations; ++iteration) {
     // GBF's rule needs normals only until the deepest approaching sample is found: the
     // lazy search picks the same sample with the same bits (chapter 7). The centre rule
@@ -154,6 +183,40 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
     }
     const PairMaterial material = world.pairMaterial(s.owner, s.other);     // Eq. (8.4)
     const double e = spec.restitution(sweep, material);
+    // [pair_patch_impulse]
+    // The sticking patch (Eq. (8.16)): the samples that share the chosen one's normal form
+    // the patch; if friction and the patch can carry the impulse that stops the whole
+    // relative twist, it is applied in place of the single point's.
+    if (settings.impulsePoint.rule == ImpulsePointRule::StickingPatch && spec.friction &&
+        settings.detection.narrow.surfaceQuery == SurfaceQuery::Samples) {
+      thread_local std::vector<Vec<D>> patch;
+      patch.clear();
+      for (const InterferenceSample<D>& m : samples) {
+        const double sign = m.owner == s.owner ? 1.0 : -1.0;  // turned to the chosen sample's owner
+        if (sign * m.normal.dot(s.normal) >= settings.impulsePoint.normalCosine) patch.push_back(m.point);
+      }
+      const std::optional<PatchImpulse<D>> weld = stickingPatchImpulse<D>(
+          owner, views[static_cast<std::size_t>(s.owner)].pose.position, other,
+          views[static_cast<std::size_t>(s.other)].pose.position, patch, s.normal, e, material.friction);
+      if (weld) {
+        const Vec<D> rOwnerP = weld->point - views[static_cast<std::size_t>(s.owner)].pose.position;
+        const Vec<D> rOtherP = weld->point - views[static_cast<std::size_t>(s.other)].pose.position;
+        owner.applyImpulse(rOwnerP, weld->J);
+        owner.applyAngularImpulse(weld->L);
+        other.applyImpulse(rOtherP, -weld->J);
+        other.applyAngularImpulse(-weld->L);
+        if (spec.ledger != nullptr) spec.ledger->record<D>(pair, s.owner, weld->J, s.normal);
+        if (spec.recorder != nullptr) {
+          spec.recorder->record<D>(spec.stage, s.owner, s.other, weld->pressure, s.normal, weld->J);
+        }
+        counters.countImpulse(ImpulseBranch::Sticking);
+        ++counters.patchImpulses;
+        ++applied;
+        if (repredict(iteration, weld->J.norm())) return applied;
+        continue;
+      }
+    }
+    // [pair_patch_impulse]
     ContactImpulse<D> impulse;  // [pair_deepest_impulse]
     if (spec.friction) {
       ++counters.frictionEvaluations;
@@ -200,30 +263,7 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
     }
     // [pair_rolling]
     ++applied;
-    // Re-predict the pair's dynamic bodies. A static body's tested pose cannot change (no
-    // impulse moves it), so it is left alone: the views of static bodies stay constant
-    // for the whole sweep, which is what lets islands run at the same time (chapter 10).
-    if (!owner.isStatic()) {
-      views[static_cast<std::size_t>(s.owner)].setPose(
-          testedPose<D>(world, s.owner, spec.lookahead, dt, settings.rotation));
-    }
-    if (!other.isStatic()) {
-      views[static_cast<std::size_t>(s.other)].setPose(
-          testedPose<D>(world, s.other, spec.lookahead, dt, settings.rotation));
-    }
-    // [pair_converged]
-    // The loop has converged when an impulse is a small fraction of the visit's first one
-    // (chapter 8, "Ending the loops"); off (0), GBF's loop runs to separation or the cap.
-    if (spec.pairImpulseTolerance > 0.0) {
-      const double magnitude = impulse.j.norm();
-      if (iteration == 0) {
-        firstImpulse = magnitude;
-      } else if (magnitude <= spec.pairImpulseTolerance * firstImpulse) {
-        ++counters.pairConvergences;
-        return applied;
-      }
-    }
-    // [pair_converged]
+    if (repredict(iteration, impulse.j.norm())) return applied;
   }
   ++counters.pairIterationCapHits;
   return applied;

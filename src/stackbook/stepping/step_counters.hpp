@@ -31,6 +31,7 @@ struct StageCounters {
   std::int64_t elasticImpulses = 0;       ///< impulses applied with e > 0 (restitution effect on)
   std::int64_t rollingImpulses = 0;       ///< rolling/spinning friction impulses applied
   std::int64_t stepConeSticks = 0;        ///< of the sticking ones: admitted by the step's cone only
+  std::int64_t patchImpulses = 0;         ///< of the sticking ones: whole patches (chapter 8, Eq. (8.16))
   /// Threads (chapter 10): sweeps that ran as islands on several threads, the islands of
   /// those sweeps, and the pairs of the largest island of each (its share of the sweep's
   /// pairs bounds what threads can buy). Zero with one thread; the only counts here that
@@ -62,6 +63,7 @@ struct StageCounters {
     frictionEvaluations += o.frictionEvaluations;
     elasticImpulses += o.elasticImpulses;
     rollingImpulses += o.rollingImpulses;
+    patchImpulses += o.patchImpulses;
     stepConeSticks += o.stepConeSticks;
     islandSweeps += o.islandSweeps;
     islands += o.islands;
@@ -78,7 +80,7 @@ struct StageCounters {
     out << sweeps << " sweeps, " << pairVisits << " pair visits, " << impulses << " impulses ("
         << frictionless << " frictionless, " << sticking << " sticking, " << sliding
         << " sliding, " << elasticImpulses << " elastic, " << rollingImpulses << " rolling, "
-        << stepConeSticks << " sticking by the step's cone), "
+        << stepConeSticks << " sticking by the step's cone, " << patchImpulses << " whole patches), "
         << frictionEvaluations << " friction evaluations, " << pairIterationCapHits
         << " pair caps hit, " << seconds * 1e3
         << " ms; " << detection.summary();
