@@ -101,6 +101,45 @@ struct StageSpec {
 };
 // [stage_spec]
 
+// [apply_patch_impulse]
+/// The sticking patch in a pair visit (chapter 8, "A whole patch at once"): the samples that
+/// share the chosen sample `s`'s normal, turned to its owner, form the patch; if friction and
+/// the patch can carry the impulse that stops the pair's whole relative twist (Eq. (8.16)),
+/// it is applied (+J, +L to the owner at the patch mean, -J, -L to the other), recorded and
+/// counted, and |J| is returned; otherwise nothing changes and -1 is returned. Kept out of
+/// line so that GBF's loop, which never takes it, keeps its own code as it was.
+template <int D>
+[[gnu::noinline]] double applyPatchImpulse(World<D>& world, const std::vector<CollisionBody<D>>& views,
+                                           const BodyPair& pair, const InterferenceSample<D>& s,
+                                           const std::vector<InterferenceSample<D>>& samples, double e, double mu,
+                                           const StageSpec& spec, const StepSettings& settings,
+                                           StageCounters& counters) {
+  thread_local std::vector<Vec<D>> patch;  // reused, as the pair loop's buffers are
+  patch.clear();
+  for (const InterferenceSample<D>& m : samples) {
+    const double sign = m.owner == s.owner ? 1.0 : -1.0;  // turned to the chosen sample's owner
+    if (sign * m.normal.dot(s.normal) >= settings.impulsePoint.normalCosine) patch.push_back(m.point);
+  }
+  RigidBody<D>& owner = world.bodies[static_cast<std::size_t>(s.owner)];
+  RigidBody<D>& other = world.bodies[static_cast<std::size_t>(s.other)];
+  const Vec<D>& xo = views[static_cast<std::size_t>(s.owner)].pose.position;
+  const Vec<D>& xb = views[static_cast<std::size_t>(s.other)].pose.position;
+  const std::optional<PatchImpulse<D>> weld = stickingPatchImpulse<D>(owner, xo, other, xb, patch, s.normal, e, mu);
+  if (!weld) return -1.0;
+  owner.applyImpulse(weld->point - xo, weld->J);
+  owner.applyAngularImpulse(weld->L);
+  other.applyImpulse(weld->point - xb, -weld->J);
+  other.applyAngularImpulse(-weld->L);
+  if (spec.ledger != nullptr) spec.ledger->record<D>(pair, s.owner, weld->J, s.normal);
+  if (spec.recorder != nullptr) {
+    spec.recorder->record<D>(spec.stage, s.owner, s.other, weld->pressure, s.normal, weld->J);
+  }
+  counters.countImpulse(ImpulseBranch::Sticking);
+  ++counters.patchImpulses;
+  return weld->J.norm();
+}
+// [apply_patch_impulse]
+
 // [pair_impulse]
 /// The impulse loop for one pair: at most spec.pairIterations times, detect interference
 /// at the tested poses (views), take the deepest approaching sample (chapter 7) or the
@@ -184,35 +223,14 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
     const PairMaterial material = world.pairMaterial(s.owner, s.other);     // Eq. (8.4)
     const double e = spec.restitution(sweep, material);
     // [pair_patch_impulse]
-    // The sticking patch (Eq. (8.16)): the samples that share the chosen one's normal form
-    // the patch; if friction and the patch can carry the impulse that stops the whole
-    // relative twist, it is applied in place of the single point's.
+    // The sticking patch (Eq. (8.16)) is tried first; if it holds, it is the visit's impulse.
     if (settings.impulsePoint.rule == ImpulsePointRule::StickingPatch && spec.friction &&
         settings.detection.narrow.surfaceQuery == SurfaceQuery::Samples) {
-      thread_local std::vector<Vec<D>> patch;
-      patch.clear();
-      for (const InterferenceSample<D>& m : samples) {
-        const double sign = m.owner == s.owner ? 1.0 : -1.0;  // turned to the chosen sample's owner
-        if (sign * m.normal.dot(s.normal) >= settings.impulsePoint.normalCosine) patch.push_back(m.point);
-      }
-      const std::optional<PatchImpulse<D>> weld = stickingPatchImpulse<D>(
-          owner, views[static_cast<std::size_t>(s.owner)].pose.position, other,
-          views[static_cast<std::size_t>(s.other)].pose.position, patch, s.normal, e, material.friction);
-      if (weld) {
-        const Vec<D> rOwnerP = weld->point - views[static_cast<std::size_t>(s.owner)].pose.position;
-        const Vec<D> rOtherP = weld->point - views[static_cast<std::size_t>(s.other)].pose.position;
-        owner.applyImpulse(rOwnerP, weld->J);
-        owner.applyAngularImpulse(weld->L);
-        other.applyImpulse(rOtherP, -weld->J);
-        other.applyAngularImpulse(-weld->L);
-        if (spec.ledger != nullptr) spec.ledger->record<D>(pair, s.owner, weld->J, s.normal);
-        if (spec.recorder != nullptr) {
-          spec.recorder->record<D>(spec.stage, s.owner, s.other, weld->pressure, s.normal, weld->J);
-        }
-        counters.countImpulse(ImpulseBranch::Sticking);
-        ++counters.patchImpulses;
+      const double welded = applyPatchImpulse<D>(world, views, pair, s, samples, e, material.friction, spec,
+                                                 settings, counters);
+      if (welded >= 0.0) {
         ++applied;
-        if (repredict(iteration, weld->J.norm())) return applied;
+        if (repredict(iteration, welded)) return applied;
         continue;
       }
     }
