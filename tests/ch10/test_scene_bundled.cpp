@@ -186,7 +186,7 @@ TEST_CASE("The card house stands under GBF's step and falls gaining energy when 
 // [bundled_pyramids_stand]
 TEST_CASE("The bundled pyramids stand at 60 Hz for their 10 s under the preset they name") {
   // Both scenes name the preset "passAsContactShortLoops" (chapter 9) and dt = 1/60 s.
-  // Standing means what the speed issue asks of the default settings: no box moves 1 mm
+  // Standing means what chapter 10 asks of a scene users run as it is: no box moves 1 mm
   // in 10 s (B15 allows 1 cm). GBF's step at this dt misses it by orders of magnitude
   // (chapter 10's table of the bundled pyramids).
   for (const char* name : {"pyramid_20_2d.json", "pyramid_3d.json"}) {
