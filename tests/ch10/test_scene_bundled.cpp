@@ -12,6 +12,7 @@
 
 #include "stackbook/scene/scene.hpp"
 #include "stackbook/scene/simulation.hpp"
+#include "stackbook/stacking/solver_preset.hpp"
 
 using namespace stackbook;
 
@@ -113,6 +114,41 @@ TEST_CASE("Full-size scenes are bundled and say in their description that CI ski
   }
   CHECK(full >= 1);
 }
+
+// [default_step_is_gbf]
+TEST_CASE("A scene that names no preset runs GBF's step: the default that chapter 10 argues for") {
+  // Chapter 10, "Why GBF's step is the default": StepSettings{} and a scene without
+  // "preset" are GBF's step, whose contact stage lets loads reach lower bodies. Scenes that
+  // name no preset get GBF's loops; the seesaw with a preset set gets GBF's loops only when
+  // the word is "gbf"; the pyramids, which name a preset, do not have them.
+  const std::string dir = std::string(STACKBOOK_SCENES_DIR) + "/";
+  const StepSettings gbf;
+  const auto sameLoops = [&gbf](const StepSettings& s) {
+    return s.collisionPairIterations == gbf.collisionPairIterations &&
+           s.contactPairIterations == gbf.contactPairIterations && s.pairImpulseTolerance == gbf.pairImpulseTolerance &&
+           s.frictionCone == gbf.frictionCone && s.shock.replacesContactStage == gbf.shock.replacesContactStage &&
+           s.shock.sweepsPerLevel == gbf.shock.sweepsPerLevel && s.shock.pairIterations == gbf.shock.pairIterations &&
+           s.shock.restitution == gbf.shock.restitution &&
+           s.shock.pairImpulseTolerance == gbf.shock.pairImpulseTolerance &&
+           s.shock.levelApproachTolerance == gbf.shock.levelApproachTolerance &&
+           s.impulsePoint.rule == gbf.impulsePoint.rule;
+  };
+  for (const char* name : {"seesaw_2d.json", "card_house_2d.json", "incline.json", "box_stack_3d.json"}) {
+    CAPTURE(name);
+    const Scene scene = loadScene(dir + name);
+    CHECK(sameLoops(scene.settings));
+    CHECK_FALSE(scene.settings.shock.replacesContactStage);  // the contact stage runs
+  }
+  for (const auto& entry : kSolverPresets) {
+    const std::string word(entry.second);
+    CAPTURE(word);
+    const Scene named = loadScene(dir + "seesaw_2d.json", {"solver.preset=\"" + word + "\""});
+    CHECK(sameLoops(named.settings) == (entry.first == SolverPreset::Gbf));
+  }
+  CHECK_FALSE(sameLoops(loadScene(dir + "pyramid_20_2d.json").settings));
+  CHECK_FALSE(sameLoops(loadScene(dir + "pyramid_3d.json").settings));
+}
+// [default_step_is_gbf]
 
 }  // TEST_SUITE
 
