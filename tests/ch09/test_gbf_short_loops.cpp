@@ -11,8 +11,10 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "../ch08/scene_builders.hpp"  // the ball dropped on its lowest sample
 #include "stack_scenes.hpp"
 #include "stackbook/stacking/solver_preset.hpp"
+#include "stackbook/stepping/pair_visit_ramp.hpp"
 
 using namespace stackbook;
 
@@ -119,6 +121,41 @@ TEST_CASE("B14: with the pass's visits ended early too the stack of 30 boxes sin
   CHECK(stacks::measureStack<2>(start, world, 1, n).sag > 10.0 * n * 1e-4);
 }
 // [test_gbf_short_loops_pass]
+
+// [test_visit_leaves]
+TEST_CASE("A pair visit at one sample leaves (-e)^k of the approach: GBF's loop of 20 and the short loop of 5") {
+  // Eq. (9.10) on a ball overlapping the ground by 1 mm on the sample straight below its
+  // centre, moving down at 1 m/s without gravity or friction: one contact sweep of
+  // restitution e is one visit, whose impulses all act there (no lever arm, so no spin).
+  // The hand-computed fractions: 0.9^20, 0.9^5 (no impulse of 0.9^i is 0.2 of the first),
+  // 0.4^3 (the third impulse, 0.16 of the first, ends the visit), and 0 for e = 0.
+  struct Visit {
+    double e;
+    int cap;
+    double tolerance;
+    double leaves;
+  };
+  for (const Visit& v : {Visit{-0.9, 20, 0.0, std::pow(0.9, 20)}, Visit{-0.9, 5, 0.2, std::pow(0.9, 5)},
+                         Visit{-0.4, 5, 0.2, 0.064}, Visit{0.0, 5, 0.2, 0.0}}) {
+    CAPTURE(v.e);
+    CAPTURE(v.cap);
+    testing::DropScene<2> scene = testing::makeBallDrop<2>(0.5, -1e-3, Material{0.0, 0.0, 0.0});
+    scene.world.gravity.setZero();
+    RigidBody<2>& ball = scene.world.bodies[static_cast<std::size_t>(scene.body)];
+    ball.velocity = Vec2(0.0, -1.0);
+    StepSettings settings;
+    settings.collisionIterations = 0;
+    settings.contactIterations = 1;
+    settings.contactRestitution = {v.e};
+    settings.contactPairIterations = v.cap;
+    settings.pairImpulseTolerance = v.tolerance;
+    step<2>(scene.world, settings);
+    CHECK(pairVisitLeaves(v.e, v.cap, v.tolerance) == doctest::Approx(v.leaves).epsilon(1e-12));
+    CHECK(-scene.upSpeed() == doctest::Approx(v.leaves).epsilon(1e-9));
+    CHECK(std::abs(scene.dropped().angularVelocity[0]) < 1e-12);
+  }
+}
+// [test_visit_leaves]
 
 // [test_gbf_short_loops_seesaw]
 TEST_CASE("under GBF's short loops the seesaw still tips: the box's load reaches the plank") {
