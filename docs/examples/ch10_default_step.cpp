@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "stackbook/scene/scene.hpp"
+#include "stackbook/scene/simulation.hpp"
 #include "stackbook/stacking/shock_propagation.hpp"
 #include "stackbook/stacking/solver_preset.hpp"
 
@@ -31,14 +32,8 @@ struct Outcome {
   double msPerStep = 0.0;
 };
 
-double energy(const World<2>& world) {
-  double e = 0.0;
-  for (const RigidBody<2>& b : world.bodies) {
-    if (b.isStatic()) continue;
-    e += b.kineticEnergy() - b.mass() * world.gravity.dot(b.position);
-  }
-  return e;
-}
+/// Kinetic plus potential energy (Eq. (10.4)), as the run summary reports it.
+double energy(const World<2>& world) { return worldEnergy<2>(world).total(); }
 
 Outcome run(const Scene& scene, const StepSettings& settings) {
   const SceneBodies<2>& bodies = std::get<SceneBodies<2>>(scene.bodies);

@@ -17,9 +17,9 @@ namespace stackbook {
 inline double pairVisitLeaves(double e, int cap, double tolerance) {
   double left = 1.0;
   for (int i = 1; i <= cap; ++i) {
-    left *= std::abs(e);  // e <= 0: the impulse leaves -e of what approached
-    if (left == 0.0) break;  // separated: the sample is not found again
-    const double size = std::pow(std::abs(e), i - 1);  // impulse i over impulse 1
+    const double size = left;  // impulse i over impulse 1: (-e)^(i-1), what approached before it
+    left *= std::abs(e);       // e <= 0: the impulse leaves -e of what approached
+    if (left == 0.0) break;    // separated: the sample is not found again
     if (i > 1 && tolerance > 0.0 && size <= tolerance) break;
   }
   return left;
