@@ -47,6 +47,7 @@
 
 #include "stackbook/scene/scene.hpp"
 #include "stackbook/stacking/shock_propagation.hpp"
+#include "stackbook/stacking/welded_pass.hpp"
 #include "stackbook/stepping/traditional_step.hpp"
 
 namespace fs = std::filesystem;
@@ -114,7 +115,7 @@ void runAndPrint(const std::string& name, const Scene& scene, std::int64_t steps
   World<D> world = std::get<SceneBodies<D>>(scene.bodies).world;
   const PostContactHook<D> hook = shockPropagationHook<D>();
   StepCounters counters;
-  for (std::int64_t n = 0; n < steps; ++n) counters += step<D>(world, scene.settings, hook);
+  for (std::int64_t n = 0; n < steps; ++n) counters += sceneStep<D>(world, scene.settings, hook);
   const auto total = [&](auto field) {
     return static_cast<long long>(field(counters.collision) + field(counters.contact) + field(counters.shock));
   };

@@ -26,6 +26,7 @@
 
 #include "stackbook/scene/scene.hpp"
 #include "stackbook/stacking/shock_propagation.hpp"
+#include "stackbook/stacking/welded_pass.hpp"
 #include "stackbook/stepping/traditional_step.hpp"
 
 namespace fs = std::filesystem;
@@ -72,7 +73,7 @@ RunOutcome runSteps(const Scene& scene, const StepSettings& settings, int steps)
   World<D> world = std::get<SceneBodies<D>>(scene.bodies).world;
   const PostContactHook<D> hook = shockPropagationHook<D>();
   RunOutcome out;
-  for (int n = 0; n < steps; ++n) out.seconds += step<D>(world, settings, hook).totalSeconds;
+  for (int n = 0; n < steps; ++n) out.seconds += sceneStep<D>(world, settings, hook).totalSeconds;
   out.hash = worldHash<D>(world);
   return out;
 }

@@ -15,6 +15,7 @@
 
 #include "stackbook/scene/scene.hpp"
 #include "stackbook/stacking/shock_propagation.hpp"
+#include "stackbook/stacking/welded_pass.hpp"
 #include "stackbook/stepping/traditional_step.hpp"
 
 using namespace stackbook;
@@ -58,7 +59,7 @@ Outcome run(const Scene& scene, int threads, int steps) {
   const PostContactHook<D> hook = shockPropagationHook<D>();
   Outcome out;
   for (int n = 0; n < steps; ++n) {
-    const StepCounters c = step<D>(world, settings, hook);
+    const StepCounters c = sceneStep<D>(world, settings, hook);
     out.seconds += c.totalSeconds;
     out.all += c.collision;
     out.all += c.contact;

@@ -5,6 +5,7 @@
 /// largest template in the library; compiling it once keeps a cold build short).
 
 #include "stackbook/stacking/shock_propagation.hpp"
+#include "stackbook/stacking/welded_pass.hpp"
 #include "stackbook/stepping/gbf_step.hpp"
 #include "stackbook/stepping/impulse_stage.hpp"
 #include "stackbook/stepping/traditional_step.hpp"
@@ -23,14 +24,16 @@ namespace stackbook {
                              std::vector<PairCandidateLists<D>>*);                             \
   template void runImpulseStage<D>(World<D>&, const StageSpec&, double, const StepSettings&,   \
                                    StageCounters&);                                            \
-  template StepCounters gbfStep<D>(World<D>&, const StepSettings&, const PostContactHook<D>&); \
+  template StepCounters gbfStep<D>(World<D>&, const StepSettings&, const PostContactHook<D>&,   \
+                                   const PreContactHook<D>&);                                  \
   template StepCounters traditionalStep<D>(World<D>&, const StepSettings&,                     \
                                            const PostContactHook<D>&);                         \
   template ContactGraph worldContactGraph<D>(const World<D>&, const ContactGraphSettings&,     \
                                              DetectionCounters*);                              \
   template ShockPassReport shockPropagation<D>(World<D>&, const StepSettings&, StageCounters&, \
                                                Layering, ContactLedger*);                      \
-  template StepCounters stackingStep<D>(World<D>&, const StepSettings&, Layering);
+  template StepCounters stackingStep<D>(World<D>&, const StepSettings&, Layering);          \
+  template StepCounters weldedPassStep<D>(World<D>&, const StepSettings&, Layering);
 
 STACKBOOK_INSTANTIATE_STEP(2)
 STACKBOOK_INSTANTIATE_STEP(3)

@@ -17,6 +17,7 @@
 #include "stackbook/scene/scene.hpp"
 #include "stackbook/scene/simulation.hpp"
 #include "stackbook/stacking/shock_propagation.hpp"
+#include "stackbook/stacking/welded_pass.hpp"
 #include "stackbook/stepping/traditional_step.hpp"
 #include "support/dimensions.hpp"
 
@@ -118,7 +119,7 @@ TEST_CASE_TEMPLATE("contacts.csv: the impulses on the box add up to its momentum
   const RigidBody<D> start = world.bodies[1];
   const auto steps = static_cast<int>(std::ceil(scene.duration / scene.settings.dt - 1e-9));
   const PostContactHook<D> hook = shockPropagationHook<D>();
-  for (int n = 0; n < steps; ++n) step<D>(world, scene.settings, hook);
+  for (int n = 0; n < steps; ++n) sceneStep<D>(world, scene.settings, hook);
   const RigidBody<D>& end = world.bodies[1];
   REQUIRE(r.recording.poses().back()[1].position == end.position);
 

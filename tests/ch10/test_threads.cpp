@@ -18,6 +18,7 @@
 #include "stackbook/geometry/analytic_sdf.hpp"
 #include "stackbook/scene/scene.hpp"
 #include "stackbook/stacking/shock_propagation.hpp"
+#include "stackbook/stacking/welded_pass.hpp"
 #include "stackbook/stepping/pair_colours.hpp"
 #include "stackbook/stepping/pair_islands.hpp"
 #include "stackbook/stepping/traditional_step.hpp"
@@ -79,7 +80,7 @@ ThreadsOutcome threadsRun(const Scene& scene, StepSettings settings, int steps) 
   World<D> world = std::get<SceneBodies<D>>(scene.bodies).world;
   const PostContactHook<D> hook = shockPropagationHook<D>();
   StepCounters total;
-  for (int n = 0; n < steps; ++n) total += step<D>(world, settings, hook);
+  for (int n = 0; n < steps; ++n) total += sceneStep<D>(world, settings, hook);  // as `stackbook run`
   ThreadsOutcome out;
   out.hash = threadsStateHash<D>(world);
   threadsAddStage(out.counts, total.collision);

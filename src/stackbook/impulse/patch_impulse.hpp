@@ -28,6 +28,20 @@ struct PatchImpulse {
   Vec<D> pressure = Vec<D>::Zero();  ///< the centre of pressure c, where J's line of action meets the patch plane
 };
 
+// [patch_spin_bound]
+/// Which spin about n a 3D patch is taken to carry (Eq. (8.19)).
+enum class PatchSpinBound {
+  /// (mu jn - |J_t|) dmin^2 / dmax over all patch points (the default): carried whatever the
+  /// normal shares, but zero when a point lies at the centre of pressure.
+  AllPoints,
+  /// The largest of that bound over the subsets of points at distance >= rho from the centre
+  /// of pressure whose hull still holds it (Eq. (9.13)): shares that put no load on the
+  /// nearer points are shares too, so the bound of any such subset is carried. Never smaller
+  /// than AllPoints'.
+  BestSubset,
+};
+// [patch_spin_bound]
+
 namespace detail {
 
 /// The change of the relative twist (u at p, relative angular velocity) of the pair when the
@@ -96,6 +110,34 @@ bool insidePatch(const std::vector<Vec<D>>& points, const Vec<D>& n, const Vec<D
   }
 }
 
+// [best_subset_spin]
+/// Eq. (9.13): the largest rho^2 over the radii rho of the patch points about the centre of
+/// pressure c such that the points at distance >= rho still hold c in their hull (grown by
+/// `slack`) and number at least three; 0 when no radius qualifies. Times (mu jn - |J_t|) / dmax
+/// it is the spin those points carry. O(P^2 log P) for P points (one hull per radius).
+template <int D>
+double bestSubsetSpin(const std::vector<Vec<D>>& points, const Vec<D>& n, const Vec<D>& c, double slack) {
+  std::vector<double> radii;
+  radii.reserve(points.size());
+  for (const Vec<D>& p : points) radii.push_back((p - c).norm());
+  std::vector<double> sorted = radii;
+  std::sort(sorted.begin(), sorted.end());
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  double best = 0.0;
+  std::vector<Vec<D>> subset;
+  for (const double rho : sorted) {  // growing rho: fewer points, each farther out
+    if (!(rho > 0.0)) continue;
+    subset.clear();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (radii[i] >= rho) subset.push_back(points[i]);
+    }
+    if (subset.size() < 3 || !insidePatch<D>(subset, n, c, slack)) break;  // smaller subsets lose c too
+    best = rho * rho;
+  }
+  return best;
+}
+// [best_subset_spin]
+
 }  // namespace detail
 
 // [patch_impulse]
@@ -108,12 +150,12 @@ bool insidePatch(const std::vector<Vec<D>>& points, const Vec<D>& n, const Vec<D
 /// cone mu (J . n), the centre of pressure lies in the patch, and in 3D the spin about n is
 /// one the patch surely carries (Eq. (8.19)).
 /// Otherwise, and for a patch of fewer than two samples (three in 3D), empty: the caller
-/// then acts at a single point as before.
+/// then acts at a single point as before. `spinBound` picks the 3D spin test (2D ignores it).
 template <int D>
 std::optional<PatchImpulse<D>> stickingPatchImpulse(const RigidBody<D>& owner, const Vec<D>& xo,
                                                     const RigidBody<D>& other, const Vec<D>& xb,
                                                     const std::vector<Vec<D>>& points, const Vec<D>& n, double e,
-                                                    double mu) {
+                                                    double mu, PatchSpinBound spinBound = PatchSpinBound::AllPoints) {
   constexpr int A = kAngularDim<D>;
   constexpr int N = D + A;
   if (points.size() < (D == 2 ? 2u : 3u) || !(e <= 0.0 && e >= -1.0) || !(mu >= 0.0)) return std::nullopt;
@@ -179,7 +221,12 @@ std::optional<PatchImpulse<D>> stickingPatchImpulse(const RigidBody<D>& owner, c
       nearest = std::min(nearest, dist);
       farthest = std::max(farthest, dist);
     }
-    const double carried = farthest > 0.0 ? (mu * jn - jt.norm()) * nearest * nearest / farthest : 0.0;
+    const double margin = mu * jn - jt.norm();
+    double carried = farthest > 0.0 ? margin * nearest * nearest / farthest : 0.0;
+    if (spinBound == PatchSpinBound::BestSubset && farthest > 0.0) {
+      carried = std::max(carried, detail::bestSubsetSpin<D>(points, n, out.pressure, 1e-9 * (1.0 + scale)) *
+                                      margin / farthest);
+    }
     if (std::abs(spin) > carried + 1e-9 * mu * jn * farthest) return std::nullopt;
   }
   return out;

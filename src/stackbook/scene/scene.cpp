@@ -3,6 +3,7 @@
 // settings), scene_shapes.cpp (shapes) and scene_bodies.cpp (bodies). See scene.hpp and
 // docs/scene_format.md.
 #include "stackbook/scene/scene.hpp"
+#include "stackbook/stacking/solver_preset.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -27,6 +28,7 @@ Scene parseScene(const json& doc, const std::string& file, const std::filesystem
                   "a scene");
   Scene scene;
   scene.file = file;
+  scene.settings = applySolverPreset(kDefaultScenePreset, scene.settings);  // a "preset" in the file replaces it
   const json* dimension = member(doc, "dimension");
   if (dimension == nullptr) r.fail("", "a scene needs \"dimension\": 2 or 3");
   if (!dimension->is_number_integer() || (dimension->get<std::int64_t>() != 2 && dimension->get<std::int64_t>() != 3)) {

@@ -227,7 +227,7 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
     const std::string q = p + "/shock";
     r.requireObject(*shock, q,
                     {"passes", "sweepsPerLevel", "pairIterations", "restitution", "replacesContactStage",
-                     "pairImpulseTolerance", "levelApproachTolerance"},
+                     "pairImpulseTolerance", "levelApproachTolerance", "welded"},
                     "the shock settings");
     if (const json* v = member(*shock, "pairImpulseTolerance")) {
       s.shock.pairImpulseTolerance = r.inRange(*v, q + "/pairImpulseTolerance", 0.0, 1.0);
@@ -242,8 +242,31 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
     if (const json* v = member(*shock, "restitution")) {
       s.shock.restitution = schedule(*v, q + "/restitution", static_cast<std::size_t>(s.shock.sweepsPerLevel), "sweepsPerLevel");
     }
+    // The welded pass (chapter 9): on by default (the preset "weldedPass"), its own loops.
+    if (const json* welded = member(*shock, "welded")) {
+      const std::string w = q + "/welded";
+      r.requireObject(*welded, w,
+                      {"enabled", "sweepsPerLevel", "pairIterations", "pairImpulseTolerance", "levelApproachTolerance",
+                       "bodyWelds", "energyGuard"},
+                      "the welded pass's settings");
+      WeldedPassSettings& ws = s.shock.welded;
+      if (const json* v = member(*welded, "enabled")) ws.enabled = r.boolean(*v, w + "/enabled");
+      if (const json* v = member(*welded, "sweepsPerLevel")) ws.sweepsPerLevel = r.integer(*v, w + "/sweepsPerLevel", 1, 100);
+      if (const json* v = member(*welded, "pairIterations")) ws.pairIterations = r.integer(*v, w + "/pairIterations", 1, 1000);
+      if (const json* v = member(*welded, "pairImpulseTolerance")) {
+        ws.pairImpulseTolerance = r.inRange(*v, w + "/pairImpulseTolerance", 0.0, 1.0);
+        if (!(ws.pairImpulseTolerance < 1.0)) r.fail(w + "/pairImpulseTolerance", "must be < 1, got 1");
+      }
+      if (const json* v = member(*welded, "levelApproachTolerance")) {
+        ws.levelApproachTolerance = r.nonNegative(*v, w + "/levelApproachTolerance");
+      }
+      if (const json* v = member(*welded, "bodyWelds")) ws.bodyWelds = r.boolean(*v, w + "/bodyWelds");
+      if (const json* v = member(*welded, "energyGuard")) ws.energyGuard = r.boolean(*v, w + "/energyGuard");
+    }
     if (const json* v = member(*shock, "replacesContactStage")) {
       s.shock.replacesContactStage = r.boolean(*v, q + "/replacesContactStage");
+      // The pass as the contact stage, asked for by name, replaces the default's welded pass.
+      if (s.shock.replacesContactStage) s.shock.welded.enabled = false;
     }
   }
 }

@@ -9,6 +9,7 @@
 
 #include "stackbook/collision/narrow_phase.hpp"
 #include "stackbook/stacking/shock_propagation.hpp"
+#include "stackbook/stacking/welded_pass.hpp"
 #include "stackbook/stepping/traditional_step.hpp"
 
 namespace stackbook {
@@ -93,7 +94,7 @@ RunResult<D> runBodies(const Scene& scene, const SceneBodies<D>& bodies, const R
   // anyway) without counting the frames between two steps one by one.
   const double frameRate = std::min(scene.output.frameRate, 1.0 / settings.dt);
   for (std::int64_t n = 1; n <= steps; ++n) {
-    result.counters += step<D>(world, settings, hook);
+    result.counters += sceneStep<D>(world, settings, hook);  // the welded pass by default (chapter 9)
     const double t = static_cast<double>(n) * settings.dt;
     if (settings.contactRecorder != nullptr) {
       result.recording.recordContacts(t, recorder.records());

@@ -22,6 +22,7 @@
 #include "stackbook/output/csv.hpp"
 #include "stackbook/output/output_files.hpp"
 #include "stackbook/stacking/shock_propagation.hpp"
+#include "stackbook/stacking/welded_pass.hpp"
 #include "stackbook/stepping/traditional_step.hpp"
 
 namespace stackbook {
@@ -695,8 +696,8 @@ double measureError(const SweepError& e, const RunResult<D>& r, const Scene& sce
     double sum = 0.0;
     for (int w = 0; w < e.windows; ++w) {
       World<D> coarse = fine;
-      for (std::int64_t n = 0; n < steps; ++n) step<D>(coarse, coarseSettings, hook);
-      for (std::int64_t n = 0; n < steps * e.refine; ++n) step<D>(fine, fineSettings, hook);
+      for (std::int64_t n = 0; n < steps; ++n) sceneStep<D>(coarse, coarseSettings, hook);
+      for (std::int64_t n = 0; n < steps * e.refine; ++n) sceneStep<D>(fine, fineSettings, hook);
       double worst = 0.0;
       for (std::size_t k = 0; k < fine.bodies.size(); ++k) {
         if (fine.bodies[k].isStatic()) continue;

@@ -588,11 +588,17 @@ inline StepSettings gbfStepShortLoops(StepSettings base = {}, int pairCap = 5, d
 }
 // [gbf_short_loops_settings]
 
+/// The welded pass's step (chapter 9, "The welded pass"), in welded_pass.hpp.
+template <int D>
+StepCounters weldedPassStep(World<D>& world, const StepSettings& settings, Layering layering);
+
 /// GBF's step with shock propagation: gbfStep() with shockPropagationHook(). The pass runs
-/// when the shockPropagation effect does (inferred on for two or more dynamic bodies).
+/// when the shockPropagation effect does (inferred on for two or more dynamic bodies). With
+/// settings.shock.welded.enabled, the welded pass's step weldedPassStep() instead.
 template <int D>
 StepCounters stackingStep(World<D>& world, const StepSettings& settings,
                           Layering layering = Layering::Topological) {
+  if (settings.shock.welded.enabled) return weldedPassStep<D>(world, settings, layering);
   return gbfStep<D>(world, settings, shockPropagationHook<D>(layering));
 }
 // [shock_propagation]
@@ -604,7 +610,8 @@ StepCounters stackingStep(World<D>& world, const StepSettings& settings,
                                                     DetectionCounters*);                           \
   extern template ShockPassReport shockPropagation<D>(World<D>&, const StepSettings&,              \
                                                       StageCounters&, Layering, ContactLedger*);   \
-  extern template StepCounters stackingStep<D>(World<D>&, const StepSettings&, Layering);
+  extern template StepCounters stackingStep<D>(World<D>&, const StepSettings&, Layering);       \
+  extern template StepCounters weldedPassStep<D>(World<D>&, const StepSettings&, Layering);
 STACKBOOK_EXTERN_SHOCK(2)
 STACKBOOK_EXTERN_SHOCK(3)
 #undef STACKBOOK_EXTERN_SHOCK

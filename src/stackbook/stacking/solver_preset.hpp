@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "stackbook/stacking/shock_propagation.hpp"
+#include "stackbook/stacking/welded_pass.hpp"
 
 namespace stackbook {
 
@@ -21,21 +22,23 @@ enum class SolverPreset {
   PassAsContact,           ///< the pass as the contact stage: passAsContactStage()
   PassAsContactShortLoops,  ///< that with short pair loops: passAsContactStageShortLoops()
   GbfShortLoops,            ///< GBF's step with short pair loops: gbfStepShortLoops()
-  PassAsContactPatch        ///< the pass as the contact stage with sticking patches: passAsContactStagePatch()
+  PassAsContactPatch,       ///< the pass as the contact stage with sticking patches: passAsContactStagePatch()
+  WeldedPass                ///< GBF's step with short loops and the welded pass: gbfStepWeldedPass()
 };
 
 /// Every preset with the word a scene names it by, in the order the scene format lists them.
-inline constexpr std::array<std::pair<SolverPreset, std::string_view>, 5> kSolverPresets{{
+inline constexpr std::array<std::pair<SolverPreset, std::string_view>, 6> kSolverPresets{{
     {SolverPreset::Gbf, "gbf"},
     {SolverPreset::PassAsContact, "passAsContact"},
     {SolverPreset::PassAsContactShortLoops, "passAsContactShortLoops"},
     {SolverPreset::GbfShortLoops, "gbfShortLoops"},
     {SolverPreset::PassAsContactPatch, "passAsContactPatch"},
+    {SolverPreset::WeldedPass, "weldedPass"},
 }};
 
 /// `base` with every field a preset sets put back to GBF's, StepSettings{}'s: the pair caps
 /// and loop tolerances of the three loops, whether the pass replaces the contact stage, its
-/// sweeps, ramp and level tolerance, the cone rule and the impulse point rule. Every preset starts from this, so a preset means the
+/// sweeps, ramp and level tolerance, the welded pass, the cone rule and the impulse point rule. Every preset starts from this, so a preset means the
 /// same settings whatever `base` came from (a scene that names one preset, timed under another).
 inline StepSettings withGbfLoops(StepSettings base) {
   const StepSettings gbf;
@@ -49,6 +52,7 @@ inline StepSettings withGbfLoops(StepSettings base) {
   base.shock.restitution = gbf.shock.restitution;
   base.shock.pairImpulseTolerance = gbf.shock.pairImpulseTolerance;
   base.shock.levelApproachTolerance = gbf.shock.levelApproachTolerance;
+  base.shock.welded = gbf.shock.welded;
   base.impulsePoint.rule = gbf.impulsePoint.rule;
   return base;
 }
@@ -62,11 +66,18 @@ inline StepSettings applySolverPreset(SolverPreset preset, StepSettings base) {
     case SolverPreset::PassAsContactShortLoops: return passAsContactStageShortLoops(base);
     case SolverPreset::GbfShortLoops: return gbfStepShortLoops(base);
     case SolverPreset::PassAsContactPatch: return passAsContactStagePatch(base);
+    case SolverPreset::WeldedPass: return gbfStepWeldedPass(base);
     case SolverPreset::Gbf: break;
   }
   return base;
 }
 // [solver_presets]
+
+// [default_scene_preset]
+/// The preset of a scene that names none, and so of `stackbook run` on such a scene
+/// (chapter 10, "Why the welded pass is the default"). StepSettings{} itself stays GBF's step.
+inline constexpr SolverPreset kDefaultScenePreset = SolverPreset::WeldedPass;
+// [default_scene_preset]
 
 /// The word a scene names `preset` by.
 inline std::string_view solverPresetName(SolverPreset preset) {

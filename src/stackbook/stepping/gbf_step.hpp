@@ -27,6 +27,12 @@ template <int D>
 using PostContactHook = std::function<void(World<D>&, const StepSettings&, StepCounters&)>;
 // [post_contact_hook]
 
+/// Called once per step after the velocity update and before the contact stage, with the
+/// velocities the contact stage will start from (chapter 9's welded pass keeps them).
+/// Empty by default.
+template <int D>
+using PreContactHook = std::function<void(const World<D>&)>;
+
 namespace detail {
 
 /// The checks every step function makes on entry.
@@ -133,7 +139,8 @@ inline StageSpec contactStageSpec(const StepSettings& s, const Effects& effects,
 ///    pair's restitution e and friction mu on the current velocities;
 /// 2. velocity update v += dt g (Eq. (5.7));
 /// 3. contact stage: detect at x' = x + dt v (Eq. (8.2)), sweep k with e_k (Eq. (8.5));
-/// 4. hook (shock propagation in chapter 9; nothing by default);
+/// 4. hook (shock propagation in chapter 9; nothing by default); `beforeContact`, if given,
+///    sees the world between steps 2 and 3;
 /// 5. position update x += dt v, R <- exp(dt [omega]x) R (Eqs. (5.8)-(5.12));
 /// 6. quarantine: a body whose state became non-finite is restored and made static (B21).
 /// Each stage runs only if its effect does (resolveEffects() of the scene and
@@ -141,7 +148,7 @@ inline StageSpec contactStageSpec(const StepSettings& s, const Effects& effects,
 /// Throws std::invalid_argument for a bad world or settings. Returns this step's counters.
 template <int D>
 StepCounters gbfStep(World<D>& world, const StepSettings& settings,
-                     const PostContactHook<D>& hook = {}) {
+                     const PostContactHook<D>& hook = {}, const PreContactHook<D>& beforeContact = {}) {
   detail::checkStepInput<D>(world, settings, "gbfStep");
   const auto start = std::chrono::steady_clock::now();
   const double dt = settings.dt;
@@ -190,6 +197,8 @@ StepCounters gbfStep(World<D>& world, const StepSettings& settings,
   }
   counters.velocityUpdateSeconds += detail::secondsSince(t);
 
+  if (beforeContact) beforeContact(world);
+
   // (3) Contact: where the new velocities would carry the bodies, restitution ramp.
   if (effects.contact && !passReplacesContact) {
     StageSpec contact = contactStageSpec(settings, effects, Lookahead::Velocity);
@@ -229,7 +238,9 @@ StepCounters gbfStep(World<D>& world, const StepSettings& settings,
 
 // Compiled once, for D = 2 and 3, in the library (src/stackbook/instantiate_step.cpp): a
 // translation unit that includes this header links to those instead of compiling its own.
-extern template StepCounters gbfStep<2>(World<2>&, const StepSettings&, const PostContactHook<2>&);
-extern template StepCounters gbfStep<3>(World<3>&, const StepSettings&, const PostContactHook<3>&);
+extern template StepCounters gbfStep<2>(World<2>&, const StepSettings&, const PostContactHook<2>&,
+                                        const PreContactHook<2>&);
+extern template StepCounters gbfStep<3>(World<3>&, const StepSettings&, const PostContactHook<3>&,
+                                        const PreContactHook<3>&);
 
 }  // namespace stackbook

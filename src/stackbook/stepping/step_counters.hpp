@@ -118,6 +118,28 @@ struct SleepCounters {
 };
 // [sleep_counters]
 
+// [welded_counters]
+/// What the welded pass did (chapter 9, "The welded pass"); zero under any other step.
+struct WeldedCounters {
+  std::int64_t passes = 0;         ///< steps whose hook ran the welded pass
+  std::int64_t carriedLoads = 0;   ///< contact-stage impulses carried to a lower body (Eq. (9.11))
+  std::int64_t weldTries = 0;      ///< bodies tested for a body weld (Eq. (9.12))
+  std::int64_t welds = 0;          ///< of those, welded
+  std::int64_t islands = 0;        ///< islands the energy guard decided on (Eq. (9.14))
+  std::int64_t gbfIslands = 0;     ///< of those, islands that took GBF's pass
+
+  WeldedCounters& operator+=(const WeldedCounters& o) {
+    passes += o.passes;
+    carriedLoads += o.carriedLoads;
+    weldTries += o.weldTries;
+    welds += o.welds;
+    islands += o.islands;
+    gbfIslands += o.gbfIslands;
+    return *this;
+  }
+};
+// [welded_counters]
+
 // [step_counters]
 /// The work of one or more steps, stage by stage. Add steps up with +=.
 struct StepCounters {
@@ -126,6 +148,7 @@ struct StepCounters {
   StageCounters contact;    ///< stage (3)
   StageCounters shock;      ///< shock propagation (chapter 9), summed over levels
   SleepCounters sleep;      ///< sleeping (chapter 8): bodies skipped, fallen asleep, woken
+  WeldedCounters welded;    ///< the welded pass (chapter 9); its sweeps, and the guard's, are in `shock`
   /// The effects this step ran (for several steps: those of the last one added).
   Effects effects;
   double velocityUpdateSeconds = 0.0;
@@ -146,6 +169,7 @@ struct StepCounters {
     contact += o.contact;
     shock += o.shock;
     sleep += o.sleep;
+    welded += o.welded;
     effects = o.effects;
     velocityUpdateSeconds += o.velocityUpdateSeconds;
     positionUpdateSeconds += o.positionUpdateSeconds;
@@ -162,6 +186,11 @@ struct StepCounters {
         << "\n  shock:     " << shock.summary() << "\n  velocity update "
         << velocityUpdateSeconds * 1e3 << " ms, position update " << positionUpdateSeconds * 1e3
         << " ms, hook " << hookSeconds * 1e3 << " ms";
+    if (welded.passes > 0) {
+      out << "\n  welded:    " << welded.passes << " passes, " << welded.carriedLoads << " loads carried, "
+          << welded.welds << " of " << welded.weldTries << " body welds, " << welded.gbfIslands << " of "
+          << welded.islands << " islands kept GBF's pass";
+    }
     if (effects.sleeping) {
       out << "\n  sleep:     " << sleep.sleepingBodySteps << " body-steps asleep, " << sleep.fellAsleep
           << " fell asleep, " << sleep.wokenUp << " woken, " << sleep.sleepingAtEnd << " asleep now";

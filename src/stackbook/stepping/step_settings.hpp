@@ -12,6 +12,7 @@
 #include "stackbook/body/rotation_update.hpp"
 #include "stackbook/collision/impulse_point.hpp"
 #include "stackbook/collision/narrow_phase.hpp"
+#include "stackbook/impulse/patch_impulse.hpp"
 #include "stackbook/impulse/friction_settings.hpp"
 #include "stackbook/stepping/contact_ledger.hpp"
 #include "stackbook/stepping/contact_recorder.hpp"
@@ -61,6 +62,35 @@ inline FrictionSettings gbfFrictionSettings() {
 }
 // [gbf_friction]
 
+// [welded_settings]
+/// The welded pass (chapter 9, "The welded pass"): GBF's contact stage runs, and its impulses
+/// are carried as loads into a pass that starts from the velocities before that stage. Its own
+/// pass is the pass as the contact stage with these loops; GBF's pass (ShockSettings' other
+/// fields) runs beside it when the energy guard is on.
+struct WeldedPassSettings {
+  /// Run the welded pass instead of GBF's pass after the contact stage (off: GBF).
+  bool enabled = false;
+  /// Sweeps of each level (>= 1), with the ramp e_l = -1 + l / sweepsPerLevel.
+  int sweepsPerLevel = 20;
+  /// Impulses per pair per level sweep, at most (>= 1).
+  int pairIterations = 5;
+  /// A pair visit ends after an impulse |j| <= this times its first (>= 0, < 1).
+  double pairImpulseTolerance = 0.2;
+  /// A level sweep whose largest approach is at most this (m/s, >= 0) ends the level.
+  double levelApproachTolerance = 1e-9;
+  /// Where the pass's impulses act (chapter 8): a whole sticking patch where one holds.
+  ImpulsePointRule impulsePoint = ImpulsePointRule::StickingPatch;
+  /// Weld a body whose supporters are at rest, in one impulse, before the pass (Eq. (9.12)).
+  bool bodyWelds = true;
+  /// The 3D spin test of a body weld (Eq. (9.13)); the pass's own patches keep AllPoints.
+  PatchSpinBound weldSpinBound = PatchSpinBound::BestSubset;
+  /// Run GBF's pass on a copy too, and let each island keep the welded pass's velocities
+  /// only if a body in it was welded and it has no more kinetic energy than GBF's pass left
+  /// it (Eq. (9.14)); the other islands take GBF's. Off, nothing bounds what the loads add.
+  bool energyGuard = true;
+};
+// [welded_settings]
+
 // [shock_settings]
 /// The knobs of chapter 9's shock-propagation pass (PhysBAM's defaults): each level of the
 /// contact graph is swept `sweepsPerLevel` times with at most `pairIterations` impulses per
@@ -87,6 +117,8 @@ struct ShockSettings {
   /// A level sweep whose largest approach speed is at most this (m/s) ends the level (0: only
   /// a sweep with no impulse does).
   double levelApproachTolerance = 0.0;
+  /// The welded pass in place of this one (off by default: GBF's pass).
+  WeldedPassSettings welded;
 
   /// The restitution of level sweep l (1-based).
   double restitutionAt(int l) const {
@@ -193,6 +225,17 @@ inline void validateStepSettings(const StepSettings& s, const char* caller = "va
     msg << "shock.pairImpulseTolerance must be in [0, 1), got " << s.shock.pairImpulseTolerance;
   } else if (!(std::isfinite(s.shock.levelApproachTolerance) && s.shock.levelApproachTolerance >= 0.0)) {
     msg << "shock.levelApproachTolerance must be finite and >= 0, got " << s.shock.levelApproachTolerance;
+  } else if (s.shock.welded.enabled && s.shock.replacesContactStage) {
+    msg << "shock.welded.enabled needs the contact stage, but shock.replacesContactStage is set";
+  } else if (s.shock.welded.sweepsPerLevel < 1) {
+    msg << "shock.welded.sweepsPerLevel must be >= 1, got " << s.shock.welded.sweepsPerLevel;
+  } else if (s.shock.welded.pairIterations < 1) {
+    msg << "shock.welded.pairIterations must be >= 1, got " << s.shock.welded.pairIterations;
+  } else if (!(s.shock.welded.pairImpulseTolerance >= 0.0 && s.shock.welded.pairImpulseTolerance < 1.0)) {
+    msg << "shock.welded.pairImpulseTolerance must be in [0, 1), got " << s.shock.welded.pairImpulseTolerance;
+  } else if (!(std::isfinite(s.shock.welded.levelApproachTolerance) && s.shock.welded.levelApproachTolerance >= 0.0)) {
+    msg << "shock.welded.levelApproachTolerance must be finite and >= 0, got "
+        << s.shock.welded.levelApproachTolerance;
   } else if (s.shock.passes < 1) {
     msg << "shock.passes must be >= 1, got " << s.shock.passes;
   } else if (s.shock.sweepsPerLevel < 1) {
