@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "../ch08/scene_builders.hpp"
@@ -89,7 +90,9 @@ TEST_CASE("the welded pass's preset: its fields and presets over presets and the
   CHECK(sweeps.impulsePoint.rule == ImpulsePointRule::StickingPatch);
   // By name, and every other preset turns it off.
   CHECK(applySolverPreset(SolverPreset::WeldedPass, base).shock.welded.enabled);
-  for (const auto& [preset, word] : kSolverPresets) {
+  for (const auto& entry : kSolverPresets) {
+    const SolverPreset preset = entry.first;
+    const std::string word(entry.second);  // a named copy: clang's CAPTURE cannot take a structured binding
     CAPTURE(word);
     CHECK(applySolverPreset(preset, welded).shock.welded.enabled == (preset == SolverPreset::WeldedPass));
   }
