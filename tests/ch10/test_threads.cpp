@@ -18,7 +18,6 @@
 #include "stackbook/geometry/analytic_sdf.hpp"
 #include "stackbook/scene/scene.hpp"
 #include "stackbook/stacking/shock_propagation.hpp"
-#include "stackbook/stacking/welded_pass.hpp"
 #include "stackbook/stepping/pair_colours.hpp"
 #include "stackbook/stepping/pair_islands.hpp"
 #include "stackbook/stepping/traditional_step.hpp"
@@ -80,7 +79,9 @@ ThreadsOutcome threadsRun(const Scene& scene, StepSettings settings, int steps) 
   World<D> world = std::get<SceneBodies<D>>(scene.bodies).world;
   const PostContactHook<D> hook = shockPropagationHook<D>();
   StepCounters total;
-  for (int n = 0; n < steps; ++n) total += sceneStep<D>(world, settings, hook);  // as `stackbook run`
+  // Chapter 8's step with shock propagation: GBF's step, also for a scene whose default is the
+  // welded pass, whose thread counts chapter 9's tests and scene_hashes check.
+  for (int n = 0; n < steps; ++n) total += step<D>(world, settings, hook);
   ThreadsOutcome out;
   out.hash = threadsStateHash<D>(world);
   threadsAddStage(out.counts, total.collision);
