@@ -31,7 +31,7 @@ namespace stackbook {
   template ContactGraph worldContactGraph<D>(const World<D>&, const ContactGraphSettings&,     \
                                              DetectionCounters*);                              \
   template ShockPassReport shockPropagation<D>(World<D>&, const StepSettings&, StageCounters&, \
-                                               Layering, ContactLedger*);                      \
+                                               Layering, ContactLedger*, std::vector<ContactPair>*); \
   template StepCounters stackingStep<D>(World<D>&, const StepSettings&, Layering);          \
   template StepCounters weldedPassStep<D>(World<D>&, const StepSettings&, Layering);
 

@@ -463,11 +463,13 @@ enum class Layering { Topological, BfsDepth };
 /// settings.shock.passes times, build the contact graph (Eq. (9.3)), its levels
 /// (topological, Eq. (9.1), unless `layering` asks for BFS depth) and run one pass
 /// (shockPropagationPass()). Returns what the last pass found; its work and time are
-/// added to `counters`.
+/// added to `counters`. When `builtEdges` is set, the edges of every graph built are appended
+/// to it (the welded pass's islands, chapter 9).
 template <int D>
 ShockPassReport shockPropagation(World<D>& world, const StepSettings& settings, StageCounters& counters,
                                  Layering layering = Layering::Topological,
-                                 ContactLedger* ledger = nullptr) {
+                                 ContactLedger* ledger = nullptr,
+                                 std::vector<ContactPair>* builtEdges = nullptr) {
   ShockPassReport report;
   const Effects effects = resolveEffects<D>(world, settings.effects);
   for (int pass = 0; pass < settings.shock.passes; ++pass) {
@@ -485,6 +487,10 @@ ShockPassReport shockPropagation(World<D>& world, const StepSettings& settings, 
     report.edges = graph.edgeCount();
     report.levels = levels.levelCount();
     report.pairs = levels.pairList.size();
+    if (builtEdges != nullptr) {
+      const std::vector<ContactPair> edges = graph.edges();
+      builtEdges->insert(builtEdges->end(), edges.begin(), edges.end());
+    }
     shockPropagationPass<D>(world, graph, levels, settings, effects, counters, ledger);
   }
   return report;
@@ -609,7 +615,8 @@ StepCounters stackingStep(World<D>& world, const StepSettings& settings,
   extern template ContactGraph worldContactGraph<D>(const World<D>&, const ContactGraphSettings&,  \
                                                     DetectionCounters*);                           \
   extern template ShockPassReport shockPropagation<D>(World<D>&, const StepSettings&,              \
-                                                      StageCounters&, Layering, ContactLedger*);   \
+                                                      StageCounters&, Layering, ContactLedger*,    \
+                                                      std::vector<ContactPair>*);                  \
   extern template StepCounters stackingStep<D>(World<D>&, const StepSettings&, Layering);       \
   extern template StepCounters weldedPassStep<D>(World<D>&, const StepSettings&, Layering);
 STACKBOOK_EXTERN_SHOCK(2)

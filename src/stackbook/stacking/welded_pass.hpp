@@ -8,7 +8,6 @@
 /// it leaves less kinetic energy (Eq. (9.14)).
 
 #include <algorithm>
-#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -159,28 +158,6 @@ inline StepSettings weldedPassSweepSettings(StepSettings settings) {
 }
 // [welded_pass_settings]
 
-// [swept_pass]
-/// shockPropagation() as it runs inside a step, with the edges of every graph it built added to
-/// `edges`: settings.shock.passes times, the contact graph of the world's motion (with the
-/// unpressed contacts when no contact stage ran, Eq. (9.9)), its levels and one pass.
-template <int D>
-void sweptPass(World<D>& world, const StepSettings& settings, StageCounters& counters, Layering layering,
-               ContactLedger* ledger, std::vector<ContactPair>& edges) {
-  const Effects effects = resolveEffects<D>(world, settings.effects);
-  for (int pass = 0; pass < settings.shock.passes; ++pass) {
-    const auto start = std::chrono::steady_clock::now();
-    const ContactGraphSettings graphSettings = stepGraphSettings(settings, effects);
-    ContactGraph graph = worldContactGraph<D>(world, graphSettings, &counters.detection);
-    if (!contactStageRuns(settings, effects)) graph = withUnpressedContacts<D>(world, graph, graphSettings, &counters.detection);
-    const ContactLevels levels = layering == Layering::Topological ? topologicalLevels(graph) : bfsDepthLevels(graph);
-    counters.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const std::vector<ContactPair> built = graph.edges();
-    edges.insert(edges.end(), built.begin(), built.end());
-    shockPropagationPass<D>(world, graph, levels, settings, effects, counters, ledger);
-  }
-}
-// [swept_pass]
-
 // [coupled_islands]
 /// The islands of dynamic bodies that `edges` and the records of `impulses` couple (a static
 /// body couples nothing): island[k] is the smallest index of body k's island, -1 for a static
@@ -242,8 +219,8 @@ void weldedPass(World<D>& world, const std::vector<RigidBody<D>>& before, const 
     g.shock.welded.enabled = false;
     g.contactRecorder = out != nullptr ? &gbfRecords : nullptr;
     ContactLedger gbfLedger = counters.contactLedger;
-    sweptPass<D>(*gbf, g, counters.shock, layering, g.frictionCone == FrictionConeRule::StepTotal ? &gbfLedger : nullptr,
-                 edges);
+    shockPropagation<D>(*gbf, g, counters.shock, layering,
+                        g.frictionCone == FrictionConeRule::StepTotal ? &gbfLedger : nullptr, &edges);
   }
   // The graph of the motion the contact stage started from.
   const StepSettings sweeps = weldedPassSweepSettings(settings);
@@ -269,7 +246,7 @@ void weldedPass(World<D>& world, const std::vector<RigidBody<D>>& before, const 
     welded = bodyWelds<D>(world, graph, levels, sweeps, w.weldSpinBound, counters.welded, passSettings.contactRecorder);
   }
   ContactLedger ledger;  // the pass's own cone, Eq. (8.13)
-  sweptPass<D>(world, passSettings, counters.shock, layering, &ledger, edges);
+  shockPropagation<D>(world, passSettings, counters.shock, layering, &ledger, &edges);
   counters.contactLedger = ledger;
   // Eq. (9.14), island by island.
   std::vector<char> keepsGbf(world.bodies.size(), 0);  // by island leader
