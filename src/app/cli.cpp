@@ -249,7 +249,10 @@ int listCommand() {
   return kOk;
 }
 
-int checkCommand(const std::string& name, const std::vector<std::string>& sets) {
+/// `stackbook check SCENE`: loads the scene as `run` would, without running it. With
+/// `allDefects`, a refusal that has more to say (every defect of a refused mesh) prints it
+/// after the one line, one item per line on stderr.
+int checkCommand(const std::string& name, const std::vector<std::string>& sets, bool allDefects) {
   try {
     const std::string path = resolveScene(name);
     const Scene scene = loadScene(path, sets);
@@ -258,7 +261,11 @@ int checkCommand(const std::string& name, const std::vector<std::string>& sets) 
               << static_cast<long long>(std::ceil(scene.duration / scene.settings.dt - 1e-9)) << " steps of dt = "
               << scene.settings.dt << " s)\n";
   } catch (const SceneError& e) {
-    return reportError(e.what(), kBadInput);
+    const int code = reportError(e.what(), kBadInput);
+    if (allDefects) {
+      for (const std::string& line : e.details()) std::cerr << "  " << line << "\n";
+    }
+    return code;
   }
   return kOk;
 }
@@ -360,6 +367,9 @@ int runCli(int argc, char** argv) {
     CLI::App* checkApp = app.add_subcommand("check", "Validate a scene file without running it");
     checkApp->add_option("scene", checkScene, "Scene file, or the name of a bundled scene")->required();
     checkApp->add_option("--set", checkSets, "Override a scene field (as for run)");
+    bool checkAllDefects = false;
+    checkApp->add_flag("--all-defects", checkAllDefects,
+                       "After the one line of a refused mesh, list every defect it has, one per line");
 
     CLI::App* listApp = app.add_subcommand("list", "List the bundled scenes with their descriptions");
 
@@ -385,7 +395,7 @@ int runCli(int argc, char** argv) {
       return reportError(std::string(e.what()) + " (see stackbook --help)", kBadInput);
     }
     if (runApp->parsed()) return runCommand(run, false);
-    if (checkApp->parsed()) return checkCommand(checkScene, checkSets);
+    if (checkApp->parsed()) return checkCommand(checkScene, checkSets, checkAllDefects);
     if (listApp->parsed()) return listCommand();
     if (sweepApp->parsed()) return sweepCommand(sweep);
     RunArgs demo;

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "stackbook/geometry/mesh_nonconvex.hpp"
 #include "stackbook/geometry/mesh_validation.hpp"
 #include "geometry_helpers.hpp"
+#include "support/damaged_mesh.hpp"
 
 using namespace stackbook;
 using stackbook::testing::contains;
@@ -148,7 +150,7 @@ TEST_CASE("polygon defects are reported at vertices and segments") {
   CHECK(contains(c.defects[0].message, "face 1 (vertices 1, 2) has zero length"));
 }
 
-TEST_CASE("validateMesh throws a MeshError that names the source and every defect") {
+TEST_CASE("validateMesh throws a MeshError that names the source and each kind of defect") {
   TriangleMesh box = boxMesh(Vec3(1, 1, 1));
   box.faces.erase(box.faces.begin());
   std::swap(box.faces[6][0], box.faces[6][1]);
@@ -158,11 +160,18 @@ TEST_CASE("validateMesh throws a MeshError that names the source and every defec
   } catch (const MeshError& error) {
     const std::string message = error.what();
     CHECK(message.rfind("crate.obj: invalid triangle mesh (8 vertices, 11 faces)", 0) == 0);
-    CHECK(contains(message, "hole (open boundary): edge"));
-    CHECK(contains(message, "inconsistent orientation (flipped face): face 6"));
+    CHECK(contains(message, "hole edges (first: edge"));
     CHECK(error.has(MeshDefectKind::OpenBoundary));
+    // The full sentences stay with the error.
+    const MeshDefect* hole = nullptr;
+    for (const MeshDefect& d : error.defects()) {
+      if (d.kind == MeshDefectKind::OpenBoundary && hole == nullptr) hole = &d;
+    }
+    REQUIRE(hole != nullptr);
+    CHECK(contains(hole->message, "the mesh has a hole there"));
   }
-  // A long list is cut at maxReportedPerKind per kind, with a count of the rest.
+  // Many defects of one kind: the line counts them all; the error lists
+  // maxReportedPerKind of them, and `omitted` in findMeshDefects counts the rest.
   TriangleMesh many = boxMesh(Vec3(1, 1, 1), 4);
   for (int k = 0; k < 40; ++k) many.vertices.push_back(Vec3(9, 9, k));
   try {
@@ -170,9 +179,36 @@ TEST_CASE("validateMesh throws a MeshError that names the source and every defec
     FAIL("no exception");
   } catch (const MeshError& error) {
     CHECK(error.defects().size() == 5);
-    CHECK(contains(error.what(), "40 defects"));
-    CHECK(contains(error.what(), "(35 more not listed)"));
+    CHECK(contains(error.what(), "40 defects: 40 unused vertices (first: vertex 98)"));
+  }
+  CHECK(findMeshDefects<3>(many).omitted == 35);
+}
+
+// [test_refused_mesh_line]
+TEST_CASE("A mesh with many defects of several kinds is refused in one short line") {
+  // 12 missing triangles (36 hole edges), 1 reversed, 100 faces repeating a vertex.
+  const test_support::DamagedMesh damaged = test_support::damagedBox(8, 12, 100);
+  const MeshCheck check = findMeshDefects<3>(damaged.mesh);
+  REQUIRE(check.counts.size() == 3);
+  CHECK(check.counts[0] == std::pair{MeshDefectKind::DegenerateFace, damaged.degenerateFaces});
+  CHECK(check.counts[1] == std::pair{MeshDefectKind::OpenBoundary, damaged.holeEdges});
+  CHECK(check.counts[2] == std::pair{MeshDefectKind::InconsistentOrientation, damaged.flippedFaces});
+  try {
+    validateMesh<3>(damaged.mesh, "character.obj");
+    FAIL("no exception");
+  } catch (const MeshError& error) {
+    const std::string line = error.what();
+    CAPTURE(line);
+    CHECK(line.find('\n') == std::string::npos);
+    CHECK(line.size() <= 300);
+    CHECK(contains(line, "137 defects: 100 degenerate faces (first: face " +
+                             std::to_string(damaged.firstDegenerateFace) + "), 36 hole edges (first: edge "));
+    CHECK(contains(line, "1 flipped face (face " + std::to_string(damaged.flippedFace) + ")"));
+    CHECK(contains(line, "; repairMesh() repairs it (chapter 6)"));
+    CHECK(error.summary() + "; repairMesh() repairs it (chapter 6)" == line);
+    CHECK(error.defects().size() == 5 + 5 + 1);  // maxReportedPerKind of each kind
   }
 }
+// [test_refused_mesh_line]
 
 }  // TEST_SUITE

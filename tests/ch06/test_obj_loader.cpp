@@ -29,6 +29,17 @@ std::string loadError(const std::string& name) {
   return "";
 }
 
+// The full sentences of the defects that error keeps ("kind: sentence", one per line).
+std::string loadDefects(const std::string& name) {
+  try {
+    loadObjMesh(dataFile(name));
+  } catch (const MeshError& error) {
+    std::string all;
+    for (const MeshDefect& d : error.defects()) all += std::string(meshDefectName(d.kind)) + ": " + d.message + "\n";
+    return all;
+  }
+  return "";
+}
 
 }  // namespace
 
@@ -80,17 +91,26 @@ TEST_CASE("bad OBJ files are rejected with the file and the defect named") {
                  "line 9 ('f 2 3 9'): face refers to vertex 9, but the file has 4 vertices"));
   CHECK(contains(loadError("no_faces.obj"), "no_faces.obj: the file contains no faces"));
 
+  // A mesh that fails its checks: one line with the count of each kind and where the
+  // first one is; the error keeps each defect's full sentence.
   const std::string open = loadError("open_box.obj");
   CHECK(contains(open, "open_box.obj: invalid triangle mesh"));
-  CHECK(contains(open, "hole (open boundary)"));
+  CHECK(contains(open, "hole edges (first: edge"));
+  CHECK(contains(loadDefects("open_box.obj"), "hole (open boundary): edge"));
 
-  const std::string flipped = loadError("flipped_face.obj");
-  CHECK(contains(flipped, "inconsistent orientation (flipped face): face 3"));
+  CHECK(contains(loadError("flipped_face.obj"), "1 flipped face (face 3)"));
+  CHECK(contains(loadDefects("flipped_face.obj"), "inconsistent orientation (flipped face): face 3"));
 
-  const std::string sliver = loadError("degenerate_triangle.obj");
-  CHECK(contains(sliver, "degenerate face: face 5 (vertices 1, 2, 4) has zero area"));
+  CHECK(contains(loadError("degenerate_triangle.obj"), "1 degenerate face (face 5)"));
+  CHECK(contains(loadDefects("degenerate_triangle.obj"), "degenerate face: face 5 (vertices 1, 2, 4) has zero area"));
 
-  CHECK(contains(loadError("inside_out.obj"), "inward orientation: the enclosed volume is -0.166667"));
+  CHECK(contains(loadError("inside_out.obj"), "faces oriented inward"));
+  CHECK(contains(loadDefects("inside_out.obj"), "inward orientation: the enclosed volume is -0.166667"));
+  for (const char* name : {"open_box.obj", "flipped_face.obj", "degenerate_triangle.obj", "inside_out.obj"}) {
+    CAPTURE(name);
+    CHECK(contains(loadError(name), "repairMesh() repairs it (chapter 6)"));
+    CHECK(loadError(name).find('\n') == std::string::npos);
+  }
 }
 // [test_obj_errors]
 

@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "support/damaged_mesh.hpp"
 #include "support/run_program.hpp"
 
 namespace fs = std::filesystem;
@@ -52,6 +54,29 @@ TEST_CASE("stackbook check of a bad scene exits 1 with one error line naming fil
   CHECK(o.code == kExitBadInput);
   CHECK(lines(o.err) == 1);
   CHECK(o.err.rfind("stackbook: error: " + file + ": /bodies/1/shape/file: no such mesh file", 0) == 0);
+}
+
+TEST_CASE("stackbook check --all-defects lists every defect of a refused mesh after its one line") {
+  const stackbook::test_support::DamagedMesh damaged = stackbook::test_support::damagedBox(8, 12, 100);
+  const fs::path dir = scratch() / "refused_mesh";
+  fs::create_directories(dir);
+  stackbook::test_support::writeMeshFile(damaged.mesh, dir / "character.obj");
+  const nlohmann::json scene = {
+      {"dimension", 3},
+      {"bodies",
+       {{{"static", true}, {"shape", {{"type", "box"}, {"size", {8, 8, 1}}}}, {"position", {0, 0, -0.5}}},
+        {{"shape", {{"type", "mesh"}, {"file", "character.obj"}}}, {"position", {0, 0, 1}}}}}};
+  std::ofstream(dir / "character.json") << scene.dump(2);
+  const std::string file = (dir / "character.json").string();
+  const Outcome plain = run("check '" + file + "'");
+  CHECK(plain.code == kExitBadInput);
+  CHECK(lines(plain.err) == 1);
+  CHECK(plain.err.find("\"meshMode\": \"repair\" repairs it") != std::string::npos);
+  const Outcome all = run("check --all-defects '" + file + "'");
+  CHECK(all.code == kExitBadInput);
+  CHECK(lines(all.err) == 1 + damaged.defects());
+  CHECK(all.err.rfind(plain.err, 0) == 0);  // the same line first
+  CHECK(all.err.find("\n  degenerate face: face ") != std::string::npos);
 }
 
 TEST_CASE("stackbook run of a missing scene exits 1 with one error line") {

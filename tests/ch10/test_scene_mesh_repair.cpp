@@ -5,9 +5,11 @@
 // two new fields are named.
 #include <doctest/doctest.h>
 
+#include <filesystem>
 #include <string>
 
 #include "stackbook/scene/scene.hpp"
+#include "support/damaged_mesh.hpp"
 
 using namespace stackbook;
 using nlohmann::json;
@@ -39,11 +41,47 @@ TEST_SUITE(STACKBOOK_CHAPTER) {
 
 TEST_CASE("Strict mode names a self-intersecting OBJ in one line") {
   const std::string e = errorOf(meshScene({{"type", "mesh"}, {"file", "two_overlapping_cubes.obj"}}));
-  CHECK(contains(e, "mesh.json: /bodies/1/shape/file: the mesh cannot be used: "));
-  CHECK(contains(e, "the surface intersects itself"));
+  CHECK(contains(e, "mesh.json: /bodies/1/shape/file: two_overlapping_cubes.obj: the surface intersects itself"));
   CHECK(contains(e, "passes through face"));
+  CHECK(contains(e, "\"meshMode\": \"repair\" repairs it"));
   CHECK(e.find('\n') == std::string::npos);
 }
+
+// [test_scene_refused_mesh]
+TEST_CASE("A downloaded mesh with 137 defects is refused in one short line, OBJ, STL and PLY alike") {
+  const test_support::DamagedMesh damaged = test_support::damagedBox(8, 12, 100);
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "stackbook_ch10_refused_mesh";
+  std::filesystem::create_directories(dir);
+  for (const std::string name : {"character.obj", "character.stl", "character.ply"}) {
+    CAPTURE(name);
+    test_support::writeMeshFile(damaged.mesh, dir / name);
+    try {
+      (void)parseScene(meshScene({{"type", "mesh"}, {"file", name}}), "mesh.json", dir);
+      FAIL("no error");
+    } catch (const SceneError& e) {
+      const std::string line = e.what();
+      CAPTURE(line);
+      CHECK(line.find('\n') == std::string::npos);
+      CHECK(line.size() <= 300);
+      CHECK(line.rfind("mesh.json: /bodies/1/shape/file: " + name + ": invalid triangle mesh (", 0) == 0);
+      // The counts per kind, each with its first place.
+      CHECK(contains(line, "137 defects: 100 degenerate faces (first: face "));
+      CHECK(contains(line, ", 36 hole edges (first: edge "));
+      CHECK(contains(line, ", 1 flipped face (face "));
+      CHECK(contains(line, "\"meshMode\": \"repair\" repairs it"));
+      CHECK(contains(line, "stackbook check --all-defects"));
+      // Every defect, each with its sentence, for `stackbook check --all-defects`.
+      REQUIRE(e.details().size() == static_cast<std::size_t>(damaged.defects()));
+      CHECK(contains(e.details().front(), "degenerate face: face "));
+      CHECK(contains(e.details().front(), "repeats a vertex"));
+      CHECK(contains(e.details().back(), "inconsistent orientation (flipped face): face "));
+    }
+    // With "meshMode": "repair" the same file loads.
+    const Scene repaired = parseScene(meshScene({{"type", "mesh"}, {"file", name}, {"meshMode", "repair"}}), "mesh.json", dir);
+    CHECK(repaired.bodyCount() == 2);
+  }
+}
+// [test_scene_refused_mesh]
 
 TEST_CASE("Repair mode: a welded mesh is exact, a damaged one approximate, and both say so") {
   {

@@ -260,7 +260,9 @@ TriangleMesh parseAssimpMesh(const std::string& bytes, const std::string& source
   }
   if (settings.dropUnusedVertices) dropUnusedVertices(mesh);
   if (settings.validate) validateMesh<3>(mesh, sourceName, settings.validation);
-  if (settings.validate && settings.rejectSelfIntersections) rejectSelfIntersections(mesh, sourceName);
+  if (settings.validate && settings.rejectSelfIntersections) {
+    rejectSelfIntersections(mesh, sourceName, static_cast<std::size_t>(std::max(1, settings.validation.maxReportedPerKind)));
+  }
   return mesh;
 }
 

@@ -58,6 +58,33 @@ inline const char* meshDefectName(MeshDefectKind kind) {
   return "unknown defect";
 }
 
+/// How many defects of a kind there are, in words: "1 degenerate face", "129 degenerate
+/// faces", "12 hole edges". The unit follows the dimension: an open or non-manifold edge in
+/// 3D, an open end or non-manifold vertex in 2D.
+inline std::string meshDefectCount(MeshDefectKind kind, int count, int dimension) {
+  const bool one = count == 1;
+  const bool solid = dimension == 3;
+  std::string what;
+  switch (kind) {
+    case MeshDefectKind::Empty: return "no faces";
+    case MeshDefectKind::IndexOutOfRange: what = one ? "vertex index out of range" : "vertex indices out of range"; break;
+    case MeshDefectKind::NonFiniteVertex: what = one ? "non-finite vertex" : "non-finite vertices"; break;
+    case MeshDefectKind::DegenerateFace: what = one ? "degenerate face" : "degenerate faces"; break;
+    case MeshDefectKind::OpenBoundary:
+      what = solid ? (one ? "hole edge" : "hole edges") : (one ? "open end" : "open ends");
+      break;
+    case MeshDefectKind::NonManifold:
+      what = solid ? (one ? "non-manifold edge" : "non-manifold edges")
+                   : (one ? "non-manifold vertex" : "non-manifold vertices");
+      break;
+    case MeshDefectKind::InconsistentOrientation: what = one ? "flipped face" : "flipped faces"; break;
+    case MeshDefectKind::InwardOrientation: return "faces oriented inward (reverse them all)";
+    case MeshDefectKind::UnusedVertex: what = one ? "unused vertex" : "unused vertices"; break;
+    case MeshDefectKind::SelfIntersection: what = one ? "self-intersection" : "self-intersections"; break;
+  }
+  return std::to_string(count) + " " + what;
+}
+
 /// One defect: its kind, where it is, and a sentence that says so.
 struct MeshDefect {
   MeshDefectKind kind = MeshDefectKind::Empty;
@@ -66,11 +93,35 @@ struct MeshDefect {
   std::string message;        ///< "face 7 (vertices 3, 4, 9) has zero area"
 };
 
+/// Where a defect is, in a few words: "face 924", "edge 3-17", "vertex 5" (the message
+/// itself for the kinds that have no single place).
+inline std::string meshDefectPlace(const MeshDefect& d, int dimension) {
+  switch (d.kind) {
+    case MeshDefectKind::IndexOutOfRange:
+      return "face " + std::to_string(d.face) +
+             (d.vertices.empty() ? std::string() : " refers to vertex " + std::to_string(d.vertices[0]));
+    case MeshDefectKind::DegenerateFace:
+    case MeshDefectKind::InconsistentOrientation: return "face " + std::to_string(d.face);
+    case MeshDefectKind::OpenBoundary:
+    case MeshDefectKind::NonManifold:
+      if (dimension == 3 && d.vertices.size() == 2) {
+        return "edge " + std::to_string(d.vertices[0]) + "-" + std::to_string(d.vertices[1]);
+      }
+      return d.vertices.empty() ? d.message : "vertex " + std::to_string(d.vertices[0]);
+    case MeshDefectKind::NonFiniteVertex:
+    case MeshDefectKind::UnusedVertex:
+      return d.vertices.empty() ? d.message : "vertex " + std::to_string(d.vertices[0]);
+    default: return d.message;
+  }
+}
+
 /// The defects findMeshDefects found: at most settings.maxReportedPerKind of each kind are
-/// listed; `omitted` counts the others.
+/// listed; `omitted` counts the others; `counts` has how many of each kind there are (listed
+/// or not), in the order of MeshDefectKind.
 struct MeshCheck {
   std::vector<MeshDefect> defects;
   int omitted = 0;
+  std::vector<std::pair<MeshDefectKind, int>> counts;
   bool ok() const { return defects.empty(); }
   bool has(MeshDefectKind kind) const {
     return std::any_of(defects.begin(), defects.end(),
@@ -89,12 +140,20 @@ struct MeshValidationSettings {
   int maxReportedPerKind = 5;
 };
 
-/// The thrown error: a std::invalid_argument whose what() lists the defects, and which
-/// keeps them for programs that want to react to a particular kind.
+/// The thrown error: a std::invalid_argument whose what() is one line, the summary and a
+/// hint of what to do, and which keeps the listed defects for programs that want to react to
+/// a particular kind or show them all. A file that cannot be read at all (a malformed line,
+/// a truncated STL) has no defects and no hint: repairing would not help.
 class MeshError : public std::invalid_argument {
  public:
-  MeshError(const std::string& message, std::vector<MeshDefect> defects)
-      : std::invalid_argument(message), defects_(std::move(defects)) {}
+  MeshError(const std::string& message, std::vector<MeshDefect> defects, const std::string& hint = {})
+      : std::invalid_argument(hint.empty() ? message : message + "; " + hint),
+        summary_(message),
+        defects_(std::move(defects)) {}
+  /// what() without the hint: "crate.obj: invalid triangle mesh (...), 3 defects: ...".
+  const std::string& summary() const { return summary_; }
+  /// Whether the mesh was read and failed its checks (so repairing it may help).
+  bool repairable() const { return !defects_.empty(); }
   const std::vector<MeshDefect>& defects() const { return defects_; }
   bool has(MeshDefectKind kind) const {
     return std::any_of(defects_.begin(), defects_.end(),
@@ -102,8 +161,12 @@ class MeshError : public std::invalid_argument {
   }
 
  private:
+  std::string summary_;
   std::vector<MeshDefect> defects_;
 };
+
+/// What the library's mesh errors suggest (a scene file suggests its own field instead).
+inline constexpr const char* kMeshRepairHint = "repairMesh() repairs it (chapter 6)";
 
 /// Signed volume (3D) or area (2D) enclosed by the faces, by the divergence theorem:
 /// sum over faces of a.(b x c)/6, or of (a x b)/2. Positive for an outward-oriented mesh.
@@ -148,7 +211,10 @@ class DefectLog {
   MeshCheck take() {
     MeshCheck check;
     check.defects = std::move(defects_);
-    for (const auto& [kind, n] : counts_) check.omitted += std::max(0, n - limit_);
+    for (const auto& [kind, n] : counts_) {
+      check.omitted += std::max(0, n - limit_);
+      check.counts.emplace_back(kind, n);
+    }
     return check;
   }
 
@@ -337,11 +403,14 @@ MeshCheck findMeshDefects(const SurfaceMesh<D>& mesh, const MeshValidationSettin
 /// determinant within `relativeTolerance` x diagonal^3 of zero counts as zero. Candidate
 /// pairs come from sorting the faces' boxes along x; returns at most `limit` sentences
 /// "edge 3-7 of face 2 passes through face 15", in face order.
+/// `total`, when given, receives the number of crossings found (listed or not).
 inline std::vector<std::string> findSelfIntersections(const TriangleMesh& mesh, std::size_t limit = 5,
-                                                      double relativeTolerance = 1e-12) {
+                                                      double relativeTolerance = 1e-12,
+                                                      std::size_t* total = nullptr) {
   std::vector<std::string> found;
   const std::size_t F = mesh.faces.size();
-  if (F < 2 || limit == 0) return found;
+  if (total != nullptr) *total = 0;
+  if (F < 2 || (limit == 0 && total == nullptr)) return found;
   const double diagonal = mesh.bounds().extent().norm();
   const double zero = relativeTolerance * diagonal * diagonal * diagonal;
   const auto orient = [](const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
@@ -407,40 +476,64 @@ inline std::vector<std::string> findSelfIntersections(const TriangleMesh& mesh, 
   std::stable_sort(hits.begin(), hits.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
   for (std::size_t k = 0; k < hits.size() && k < limit; ++k) found.push_back(hits[k].second);
+  if (total != nullptr) *total = hits.size();
   return found;
 }
 // [self_intersections]
 
-/// Throws MeshError when findSelfIntersections() finds anything: "SOURCE: the surface
-/// intersects itself (edge 3-7 of face 2 passes through face 15, ...)".
-inline void rejectSelfIntersections(const TriangleMesh& mesh, const std::string& source) {
-  const std::vector<std::string> crossings = findSelfIntersections(mesh, 3);
+/// Throws MeshError when findSelfIntersections() finds anything, in one line: "SOURCE: the
+/// surface intersects itself, so it does not bound one solid: 4 self-intersections (first:
+/// edge 3-7 of face 2 passes through face 15)"; the error keeps the first `listed` crossings.
+inline void rejectSelfIntersections(const TriangleMesh& mesh, const std::string& source, std::size_t listed = 5) {
+  std::size_t total = 0;
+  const std::vector<std::string> crossings = findSelfIntersections(mesh, std::max<std::size_t>(listed, 1), 1e-12, &total);
   if (crossings.empty()) return;
   std::ostringstream msg;
-  msg << source << ": the surface intersects itself, so it does not bound one solid (";
-  for (std::size_t k = 0; k < crossings.size(); ++k) msg << (k ? "; " : "") << crossings[k];
-  msg << (crossings.size() == 3 ? "; ...)" : ")")
-      << "; join the parts into one closed surface, or load it with meshMode \"repair\"";
-  throw MeshError(msg.str(), {MeshDefect{MeshDefectKind::SelfIntersection, -1, {}, crossings[0]}});
+  msg << source << ": the surface intersects itself, so it does not bound one solid: "
+      << meshDefectCount(MeshDefectKind::SelfIntersection, static_cast<int>(total), 3) << " (first: " << crossings[0]
+      << ")";
+  std::vector<MeshDefect> defects;
+  for (const std::string& c : crossings) defects.push_back(MeshDefect{MeshDefectKind::SelfIntersection, -1, {}, c});
+  throw MeshError(msg.str(), std::move(defects), "join the parts into one closed surface, or " + std::string(kMeshRepairHint));
 }
 
-/// Throws MeshError when findMeshDefects reports anything. The message starts with the
-/// source ("mesh ring.obj: 2 defects:") and lists each defect as "kind: where".
+// [mesh_error_line]
+/// The one line of a refused mesh: the source, its size, the number of defects, then for
+/// each kind its count and the first place, "crate.obj: invalid triangle mesh (8 vertices,
+/// 11 faces), 4 defects: 3 hole edges (first: edge 0-4), 1 flipped face (face 6)".
+template <int D>
+std::string meshDefectSummary(const SurfaceMesh<D>& mesh, const MeshCheck& check, const std::string& source) {
+  int count = 0;
+  for (const auto& [kind, n] : check.counts) count += n;
+  std::ostringstream msg;
+  msg << source << ": invalid " << (D == 3 ? "triangle mesh" : "polygon") << " (" << mesh.vertices.size()
+      << " vertices, " << mesh.faces.size() << " faces), " << count << (count == 1 ? " defect" : " defects") << ": ";
+  bool firstKind = true;
+  for (const auto& [kind, n] : check.counts) {
+    msg << (firstKind ? "" : ", ") << meshDefectCount(kind, n, D);
+    firstKind = false;
+    const auto first = std::find_if(check.defects.begin(), check.defects.end(),
+                                    [kind = kind](const MeshDefect& d) { return d.kind == kind; });
+    if (first == check.defects.end() || kind == MeshDefectKind::Empty || kind == MeshDefectKind::InwardOrientation) {
+      continue;
+    }
+    msg << " (" << (n == 1 ? "" : "first: ") << meshDefectPlace(*first, D) << ")";
+  }
+  return msg.str();
+}
+// [mesh_error_line]
+
+/// Throws MeshError when findMeshDefects reports anything. what() is the line of
+/// meshDefectSummary() and the hint kMeshRepairHint; defects() holds the listed defects (at
+/// most settings.maxReportedPerKind of each kind), each with its full sentence.
 template <int D>
 void validateMesh(const SurfaceMesh<D>& mesh, const std::string& source,
                   const MeshValidationSettings& settings = {}) {
   MeshCheck check = findMeshDefects<D>(mesh, settings);
   if (check.ok()) return;
-  const std::size_t count = check.defects.size() + static_cast<std::size_t>(check.omitted);
-  std::ostringstream msg;
-  msg << source << ": invalid " << (D == 3 ? "triangle mesh" : "polygon") << " ("
-      << mesh.vertices.size() << " vertices, " << mesh.faces.size() << " faces), " << count
-      << (count == 1 ? " defect" : " defects") << ":";
-  for (const MeshDefect& d : check.defects) {
-    msg << "\n  " << meshDefectName(d.kind) << ": " << d.message;
-  }
-  if (check.omitted > 0) msg << "\n  (" << check.omitted << " more not listed)";
-  throw MeshError(msg.str(), std::move(check.defects));
+  // The line first: the defects move into the error, and argument order is unspecified.
+  std::string line = meshDefectSummary<D>(mesh, check, source);
+  throw MeshError(std::move(line), std::move(check.defects), kMeshRepairHint);
 }
 
 }  // namespace stackbook

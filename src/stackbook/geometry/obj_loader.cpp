@@ -317,7 +317,9 @@ TriangleMesh parseObjMesh(const std::string& text, const std::string& sourceName
   }
   if (settings.dropUnusedVertices) dropUnusedVertices(mesh);
   if (settings.validate) validateMesh<3>(mesh, sourceName, settings.validation);
-  if (settings.validate && settings.rejectSelfIntersections) rejectSelfIntersections(mesh, sourceName);
+  if (settings.validate && settings.rejectSelfIntersections) {
+    rejectSelfIntersections(mesh, sourceName, static_cast<std::size_t>(std::max(1, settings.validation.maxReportedPerKind)));
+  }
   return mesh;
 }
 // [parse_obj_mesh]

@@ -29,15 +29,20 @@ namespace stackbook {
 /// `scenes/stack.json: /bodies/2/shape/size/0: must be > 0, got -1`.
 class SceneError : public std::runtime_error {
  public:
-  SceneError(const std::string& file, const std::string& pointer, const std::string& reason);
+  SceneError(const std::string& file, const std::string& pointer, const std::string& reason,
+             std::vector<std::string> details = {});
   const std::string& file() const { return file_; }
   const std::string& pointer() const { return pointer_; }
   const std::string& reason() const { return reason_; }
+  /// More than the one line says, one item per line, for a program that asks for it: every
+  /// defect of a refused mesh (`stackbook check --all-defects`). Often empty.
+  const std::vector<std::string>& details() const { return details_; }
 
  private:
   std::string file_;
   std::string pointer_;
   std::string reason_;
+  std::vector<std::string> details_;
 };
 // [scene_error]
 

@@ -32,8 +32,9 @@ class Reader {
   explicit Reader(std::string file, const SceneLimits& limits = {}) : file_(std::move(file)), limits_(limits) {}
   const SceneLimits& limits() const { return limits_; }
 
-  [[noreturn]] void fail(const std::string& pointer, const std::string& reason) const {
-    throw SceneError(file_, pointer, reason);
+  [[noreturn]] void fail(const std::string& pointer, const std::string& reason,
+                         std::vector<std::string> details = {}) const {
+    throw SceneError(file_, pointer, reason, std::move(details));
   }
   const std::string& file() const { return file_; }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include "stackbook/geometry/analytic_sdf.hpp"
@@ -18,6 +19,9 @@
 namespace stackbook::scene_detail {
 
 namespace {
+
+/// What a refused mesh in a scene suggests: the field that loads it anyway.
+constexpr const char* kSceneMeshRepairHint = "\"meshMode\": \"repair\" repairs it";
 
 const std::vector<std::string>& shapeTypes(int dimension) {
   static const std::vector<std::string> two{"box", "disk", "sphere", "annulus", "torus", "ring",
@@ -323,12 +327,29 @@ BuiltShape<D> buildShape(const Reader& r, const json& spec, const std::string& p
         load.dropUnusedVertices = false;
         load.validate = false;
       }
+      // [scene_mesh_refusal]
+      // A strict load keeps every defect (not five of each kind), for `check --all-defects`;
+      // the line itself has the counts, the first of each kind and what to do.
+      if (mode == MeshMode::Strict) load.validation.maxReportedPerKind = std::numeric_limits<int>::max();
       TriangleMesh mesh;
       try {
         mesh = loadMeshFile(path.string(), load);
+      } catch (const MeshError& e) {
+        if (!e.repairable()) r.fail(ptr + "/file", std::string("the mesh cannot be used: ") + e.what());
+        std::vector<std::string> every;
+        for (const MeshDefect& d : e.defects()) every.push_back(std::string(meshDefectName(d.kind)) + ": " + d.message);
+        // The field names the file; the line names it as the scene wrote it, not by its path.
+        std::string summary = e.summary();
+        if (const std::string prefix = path.string() + ": "; summary.rfind(prefix, 0) == 0) {
+          summary = name + ": " + summary.substr(prefix.size());
+        }
+        r.fail(ptr + "/file",
+               summary + "; " + kSceneMeshRepairHint + "; `stackbook check --all-defects` lists them all",
+               std::move(every));
       } catch (const std::exception& e) {
         r.fail(ptr + "/file", std::string("the mesh cannot be used: ") + e.what());
       }
+      // [scene_mesh_refusal]
       if (static_cast<long long>(mesh.vertices.size()) > r.limits().meshVertices) {
         r.fail(ptr + "/file", "the mesh has " + std::to_string(mesh.vertices.size()) + " vertices; at most " +
                                   std::to_string(r.limits().meshVertices));

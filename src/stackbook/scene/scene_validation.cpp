@@ -35,11 +35,13 @@ std::string oneLine(const std::string& text) {
 
 }  // namespace
 
-SceneError::SceneError(const std::string& file, const std::string& pointer,
-                       const std::string& reason)
+SceneError::SceneError(const std::string& file, const std::string& pointer, const std::string& reason,
+                       std::vector<std::string> details)
     : std::runtime_error(printable(file) + ": " + (pointer.empty() ? std::string() : printable(pointer) + ": ") +
                          printable(oneLine(reason))),
-      file_(file), pointer_(pointer), reason_(oneLine(reason)) {}
+      file_(file), pointer_(pointer), reason_(oneLine(reason)), details_(std::move(details)) {
+  for (std::string& line : details_) line = printable(oneLine(line));
+}
 
 int Scene::bodyCount() const {
   return std::visit([](const auto& b) { return b.world.size(); }, bodies);
