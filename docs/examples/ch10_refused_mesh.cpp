@@ -34,7 +34,7 @@ int main() {
     for (std::size_t k = 0; k < e.details().size() && k < shown; ++k) std::printf("  %s\n", e.details()[k].c_str());
     std::printf("  ... (%zu lines in all, one per defect)\n", e.details().size());
     const bool ok = line.find('\n') == std::string::npos && line.size() <= 300 &&
-                    line.find("\"meshMode\": \"repair\" repairs it") != std::string::npos &&
+                    line.find("set \"meshMode\": \"repair\" to repair it (chapter 6)") != std::string::npos &&
                     e.details().size() == static_cast<std::size_t>(damaged.defects());
     if (!ok) {
       std::fprintf(stderr, "ch10_refused_mesh: the refusal is not one short line with the hint and every defect\n");

@@ -71,7 +71,7 @@ TEST_CASE("stackbook check --all-defects lists every defect of a refused mesh af
   const Outcome plain = run("check '" + file + "'");
   CHECK(plain.code == kExitBadInput);
   CHECK(lines(plain.err) == 1);
-  CHECK(plain.err.find("\"meshMode\": \"repair\" repairs it") != std::string::npos);
+  CHECK(plain.err.find("set \"meshMode\": \"repair\" to repair it (chapter 6)") != std::string::npos);
   const Outcome all = run("check --all-defects '" + file + "'");
   CHECK(all.code == kExitBadInput);
   CHECK(lines(all.err) == 1 + damaged.defects());

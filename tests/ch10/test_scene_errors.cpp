@@ -207,7 +207,7 @@ TEST_CASE("A mesh with a hole is rejected at the shape's file field") {
     // A repairable mesh's line says what is wrong and how to repair it (chapter 10).
     CHECK(e.reason().find("open_box.obj: invalid triangle mesh") != std::string::npos);
     CHECK(e.reason().find("hole edges (first: edge ") != std::string::npos);
-    CHECK(e.reason().find("\"meshMode\": \"repair\" repairs it") != std::string::npos);
+    CHECK(e.reason().find("set \"meshMode\": \"repair\" to repair it (chapter 6)") != std::string::npos);
     CHECK(std::string(e.what()).find('\n') == std::string::npos);
   }
 }

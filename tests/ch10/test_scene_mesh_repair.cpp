@@ -43,7 +43,7 @@ TEST_CASE("Strict mode names a self-intersecting OBJ in one line") {
   const std::string e = errorOf(meshScene({{"type", "mesh"}, {"file", "two_overlapping_cubes.obj"}}));
   CHECK(contains(e, "mesh.json: /bodies/1/shape/file: two_overlapping_cubes.obj: the surface intersects itself"));
   CHECK(contains(e, "passes through face"));
-  CHECK(contains(e, "\"meshMode\": \"repair\" repairs it"));
+  CHECK(contains(e, "set \"meshMode\": \"repair\" to repair it (chapter 6)"));
   CHECK(e.find('\n') == std::string::npos);
 }
 
@@ -68,7 +68,7 @@ TEST_CASE("A downloaded mesh with 137 defects is refused in one short line, OBJ,
       CHECK(contains(line, "137 defects: 100 degenerate faces (first: face "));
       CHECK(contains(line, ", 36 hole edges (first: edge "));
       CHECK(contains(line, ", 1 flipped face (face "));
-      CHECK(contains(line, "\"meshMode\": \"repair\" repairs it"));
+      CHECK(contains(line, "set \"meshMode\": \"repair\" to repair it (chapter 6)"));
       CHECK(contains(line, "stackbook check --all-defects"));
       // Every defect, each with its sentence, for `stackbook check --all-defects`.
       REQUIRE(e.details().size() == static_cast<std::size_t>(damaged.defects()));

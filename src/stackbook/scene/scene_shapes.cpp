@@ -21,7 +21,7 @@ namespace stackbook::scene_detail {
 namespace {
 
 /// What a refused mesh in a scene suggests: the field that loads it anyway.
-constexpr const char* kSceneMeshRepairHint = "\"meshMode\": \"repair\" repairs it";
+constexpr const char* kSceneMeshRepairHint = "set \"meshMode\": \"repair\" to repair it (chapter 6)";
 
 const std::vector<std::string>& shapeTypes(int dimension) {
   static const std::vector<std::string> two{"box", "disk", "sphere", "annulus", "torus", "ring",
@@ -344,7 +344,7 @@ BuiltShape<D> buildShape(const Reader& r, const json& spec, const std::string& p
           summary = name + ": " + summary.substr(prefix.size());
         }
         r.fail(ptr + "/file",
-               summary + "; " + kSceneMeshRepairHint + "; `stackbook check --all-defects` lists them all",
+               summary + "; " + kSceneMeshRepairHint + "; stackbook check --all-defects lists all",
                std::move(every));
       } catch (const std::exception& e) {
         r.fail(ptr + "/file", std::string("the mesh cannot be used: ") + e.what());
