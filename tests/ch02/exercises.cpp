@@ -1,6 +1,6 @@
 // Chapter 2 exercises. Skipped by default; run them with
 //   ctest --preset exercises -L ch02
-// or  build/exercises/tests/ch02/test_ch02 --no-skip -ts=ch02_exercises -tc="Exercise 2.3*"
+// or  build/exercises/tests/ch02/test_ch02_exercises --no-skip -ts=ch02_exercises -tc="Exercise 2.3*"
 #include <algorithm>
 #include <array>
 #include <cmath>

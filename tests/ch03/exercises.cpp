@@ -1,5 +1,6 @@
-// Chapter 3 exercises. Skipped by default; run with
-//   build/exercises/tests/ch03/test_ch03 --no-skip -ts=ch03_exercises
+// Chapter 3 exercises. Skipped by default; run them with
+//   ctest --preset exercises -L ch03
+// or  build/exercises/tests/ch03/test_ch03_exercises --no-skip -ts=ch03_exercises
 // They fail with the stubs in src/stackbook/exercises/ and pass with the reference
 // solutions in chapters/solutions/.
 #include <doctest/doctest.h>

@@ -1,6 +1,6 @@
 // Chapter 6 exercises. Skipped by default; run them with
 //   ctest --preset exercises -L ch06
-// or  build/exercises/tests/ch06/test_ch06 --no-skip -ts=ch06_exercises -tc="Exercise 6.1*"
+// or  build/exercises/tests/ch06/test_ch06_exercises --no-skip -ts=ch06_exercises -tc="Exercise 6.1*"
 #include <doctest/doctest.h>
 
 #include <cmath>

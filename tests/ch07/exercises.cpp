@@ -1,6 +1,6 @@
 // Chapter 7 exercises. Skipped by default; run them with
 //   ctest --preset exercises -L ch07
-//   build/exercises/tests/test_ch07 --no-skip -ts=ch07_exercises -tc="Exercise 7.2*"
+//   build/exercises/tests/ch07/test_ch07_exercises --no-skip -ts=ch07_exercises -tc="Exercise 7.2*"
 // They fail until you solve the exercise (the stub returns a neutral value).
 #include <doctest/doctest.h>
 
