@@ -25,11 +25,11 @@ int main() {
        {{{"static", true}, {"shape", {{"type", "box"}, {"size", {8, 8, 1}}}}, {"position", {0, 0, -0.5}}},
         {{"shape", {{"type", "mesh"}, {"file", "character.obj"}}}, {"position", {0, 0, 1}}}}}};
   try {
-    (void)parseScene(scene, "my_scene.json", dir);
+    (void)parseScene(scene, "mesh.json", dir);
   } catch (const SceneError& e) {
     const std::string line = e.what();
-    std::printf("$ stackbook check my_scene.json\nstackbook: error: %s\n\n", line.c_str());
-    std::printf("$ stackbook check --all-defects my_scene.json\nstackbook: error: (the same line)\n");
+    std::printf("$ stackbook check mesh.json\nstackbook: error: %s\n\n", line.c_str());
+    std::printf("$ stackbook check --all-defects mesh.json\nstackbook: error: (the same line)\n");
     const std::size_t shown = 4;
     for (std::size_t k = 0; k < e.details().size() && k < shown; ++k) std::printf("  %s\n", e.details()[k].c_str());
     std::printf("  ... (%zu lines in all, one per defect)\n", e.details().size());
