@@ -15,6 +15,7 @@
 #include "stackbook/scene/scene.hpp"
 #include "stackbook/scene/simulation.hpp"
 #include "stackbook/stacking/shock_propagation.hpp"
+#include "stackbook/stacking/welded_pass.hpp"
 #include "stackbook/stepping/traditional_step.hpp"
 
 namespace peers {
@@ -63,7 +64,7 @@ class StackbookPile final : public Engine {
     }
   }
 
-  void step() override { counters_ += stackbook::step<D>(world_, settings_, hook_); }
+  void step() override { counters_ += sceneStep<D>(world_, settings_, hook_); }  // the step the preset names
 
   void startTiming() override {
     start_ = world_;

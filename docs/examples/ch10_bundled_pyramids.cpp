@@ -6,7 +6,7 @@
 // sticking patches (passAsContactStagePatch(), "preset": "passAsContactPatch"), GBF's step
 // with sticking patches: GBF's short loops (gbfStepShortLoops()) with the patch rule, the
 // patch preset's level tolerance and the pass's 20 sweeps per level, and the default of a scene
-// that names no preset, GBF's step with the welded pass (gbfStepWeldedPass(), chapter 9).
+// that names no preset, the carrying pass (carryingPass(), chapter 12).
 // scenes/pyramid_204_3d.json (8 levels), which names no preset, runs under GBF's step and the
 // default only. Prints one Markdown row per scene and step: the largest horizontal
 // drift and the largest speed of any box at the end, the milliseconds and impulses per step and
@@ -89,7 +89,7 @@ int main() {
     gbfPatch.shock.sweepsPerLevel = patch.shock.sweepsPerLevel;
     const StepSettings byDefault = applySolverPreset(kDefaultScenePreset, gbf);
     // The scene names the preset: its settings must be the short loops' (the last names none).
-    if (!named && !scene.settings.shock.welded.enabled) {
+    if (!named && scene.settings.shock.freeze != FreezeRule::WhenItCarries) {
       std::fprintf(stderr, "%s names a preset\n", name);
       return 1;
     }
@@ -110,7 +110,7 @@ int main() {
                  {"short pair loops, `passAsContactStageShortLoops()` (the scene's preset)", &shortLoops},
                  {"sticking patches, `passAsContactStagePatch()`", &patch},
                  {"GBF's step with sticking patches and 20 sweeps per level", &gbfPatch},
-                 {"the default: GBF's step with the welded pass, `gbfStepWeldedPass()`", &byDefault}};
+                 {"the default: the carrying pass, `carryingPass()` (chapter 12)", &byDefault}};
     for (const auto& s : steps) {
       if (!named && s.settings != &gbf && s.settings != &byDefault) continue;  // 204 cubes: two steps
       const Outcome o = run(scene, *s.settings);

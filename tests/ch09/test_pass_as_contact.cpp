@@ -217,7 +217,7 @@ TEST_CASE("each solver preset is the settings function it names, and its word na
   CHECK_FALSE(solverPresetNamed("GBF").has_value());  // the words are case-sensitive
   CHECK_FALSE(solverPresetNamed("").has_value());
   CHECK(solverPresetWords() ==
-        "\"gbf\", \"passAsContact\", \"passAsContactShortLoops\", \"gbfShortLoops\", \"passAsContactPatch\" or \"weldedPass\"");
+        "\"gbf\", \"passAsContact\", \"passAsContactShortLoops\", \"gbfShortLoops\", \"passAsContactPatch\", \"weldedPass\" or \"carryingPass\"");
 }
 
 }  // TEST_SUITE

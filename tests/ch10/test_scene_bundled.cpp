@@ -115,13 +115,12 @@ TEST_CASE("Full-size scenes are bundled and say in their description that CI ski
   CHECK(full >= 1);
 }
 
-// [default_step_is_welded]
-TEST_CASE("A scene that names no preset runs GBF's step with the welded pass: the default that chapter 10 argues for") {
-  // Chapter 10, "Why the welded pass is the default": a scene without "preset" runs the preset
-  // kDefaultScenePreset, GBF's step with its own loops in the two stages and the welded pass
-  // (chapter 9) after them. StepSettings{} stays GBF's step. A scene that names a preset gets
-  // GBF's loops only for "gbf" and "weldedPass", and the welded pass only for "weldedPass"; a
-  // scene that asks for the pass as the contact stage field by field gets that, not the welded pass.
+// [presets_by_name]
+TEST_CASE("A scene's preset sets the loops: GBF's for \"gbf\" and \"weldedPass\", the welded pass only for \"weldedPass\"") {
+  // A scene without "preset" runs kDefaultScenePreset, the carrying pass (chapter 12, whose tests
+  // pin it). A scene that names a preset gets GBF's loops in its two stages only for "gbf" and
+  // "weldedPass", and the welded pass only for "weldedPass"; a scene that asks for the pass as
+  // the contact stage field by field gets that, not the welded pass.
   const std::string dir = std::string(STACKBOOK_SCENES_DIR) + "/";
   const StepSettings gbf;
   CHECK_FALSE(gbf.shock.welded.enabled);
@@ -133,14 +132,8 @@ TEST_CASE("A scene that names no preset runs GBF's step with the welded pass: th
            s.shock.restitution == gbf.shock.restitution &&
            s.shock.pairImpulseTolerance == gbf.shock.pairImpulseTolerance &&
            s.shock.levelApproachTolerance == gbf.shock.levelApproachTolerance &&
-           s.impulsePoint.rule == gbf.impulsePoint.rule;
+           s.impulsePoint.rule == gbf.impulsePoint.rule && s.shock.freeze == gbf.shock.freeze;
   };
-  for (const char* name : {"seesaw_2d.json", "card_house_2d.json", "incline.json", "box_stack_3d.json"}) {
-    CAPTURE(name);
-    const Scene scene = loadScene(dir + name);
-    CHECK(sameLoops(scene.settings));
-    CHECK(scene.settings.shock.welded.enabled);
-  }
   for (const auto& entry : kSolverPresets) {
     const std::string word(entry.second);
     CAPTURE(word);
@@ -149,50 +142,20 @@ TEST_CASE("A scene that names no preset runs GBF's step with the welded pass: th
     CHECK(sameLoops(named.settings) == (entry.first == SolverPreset::Gbf || welded));
     CHECK(named.settings.shock.welded.enabled == welded);
   }
-  const Scene tuned = loadScene(dir + "seesaw_2d.json", {"solver.shock.welded.sweepsPerLevel=8",
+  const Scene tuned = loadScene(dir + "seesaw_2d.json", {"solver.preset=\"weldedPass\"", "solver.shock.welded.sweepsPerLevel=8",
                                                         "solver.shock.welded.energyGuard=false"});
   CHECK(tuned.settings.shock.welded.enabled);
   CHECK(tuned.settings.shock.welded.sweepsPerLevel == 8);
   CHECK_FALSE(tuned.settings.shock.welded.energyGuard);
-  CHECK_FALSE(loadScene(dir + "seesaw_2d.json", {"solver.shock.welded.enabled=false"}).settings.shock.welded.enabled);
-  const Scene pass = loadScene(dir + "seesaw_2d.json", {"solver.shock.replacesContactStage=true"});
+  CHECK_FALSE(loadScene(dir + "seesaw_2d.json", {"solver.preset=\"weldedPass\"", "solver.shock.welded.enabled=false"})
+                  .settings.shock.welded.enabled);
+  const Scene pass = loadScene(dir + "seesaw_2d.json", {"solver.preset=\"gbf\"", "solver.shock.replacesContactStage=true"});
   CHECK(pass.settings.shock.replacesContactStage);
   CHECK_FALSE(pass.settings.shock.welded.enabled);
   CHECK_FALSE(sameLoops(loadScene(dir + "pyramid_20_2d.json").settings));
   CHECK_FALSE(sameLoops(loadScene(dir + "pyramid_3d.json").settings));
 }
-// [default_step_is_welded]
-
-// [card_house_default]
-TEST_CASE("B16 under the default: no card of the bundled card house welds so it runs GBF's step bit for bit") {
-  // The cards lean on each other, so no card rests on supporters at rest and every island
-  // keeps GBF's pass (Eq. (9.14)): the default's trajectory is GBF's, which stands (the bound
-  // of the card house test of the slow suite: every card within 1 mm; here its first 0.2 s).
-  const std::string path = std::string(STACKBOOK_SCENES_DIR) + "/card_house_2d.json";
-  const Scene byDefault = loadScene(path);
-  const Scene gbf = loadScene(path, {"solver.preset=\"gbf\""});
-  World<2> a = std::get<SceneBodies<2>>(byDefault.bodies).world;
-  World<2> b = std::get<SceneBodies<2>>(gbf.bodies).world;
-  const World<2> start = a;
-  StepCounters counters;
-  for (int n = 0; n < 400; ++n) {
-    counters += stackingStep<2>(a, byDefault.settings);
-    stackingStep<2>(b, gbf.settings);
-  }
-  CHECK(counters.welded.passes == 400);
-  CHECK(counters.welded.welds == 0);
-  CHECK(counters.welded.gbfIslands == counters.welded.islands);
-  bool same = true;
-  double moved = 0.0;
-  for (std::size_t k = 0; k < a.bodies.size(); ++k) {
-    same = same && a.bodies[k].position == b.bodies[k].position && a.bodies[k].velocity == b.bodies[k].velocity &&
-           a.bodies[k].angularMomentum == b.bodies[k].angularMomentum;
-    moved = std::max(moved, (a.bodies[k].position - start.bodies[k].position).norm());
-  }
-  CHECK(same);
-  CHECK(moved < 1e-3);
-}
-// [card_house_default]
+// [presets_by_name]
 
 // [card_house_short_loops]
 TEST_CASE("B16 under GBF's short loops: the card house comes down with 10 contact sweeps and stands with 20") {

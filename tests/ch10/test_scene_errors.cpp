@@ -88,7 +88,7 @@ const std::vector<BadCase>& badCases() {
       {"unknown friction cone", R"({"solver": {"frictionCone": "pair"}})", "/solver/frictionCone",
        "must be \"impulse\" or \"step\", got \"pair\""},
       {"unknown solver preset", R"({"solver": {"preset": "short"}})", "/solver/preset",
-       "must be \"gbf\", \"passAsContact\", \"passAsContactShortLoops\", \"gbfShortLoops\", \"passAsContactPatch\" or \"weldedPass\", got \"short\""},
+       "must be \"gbf\", \"passAsContact\", \"passAsContactShortLoops\", \"gbfShortLoops\", \"passAsContactPatch\", \"weldedPass\" or \"carryingPass\", got \"short\""},
       {"welded pass without sweeps", R"({"solver": {"shock": {"welded": {"sweepsPerLevel": 0}}}})",
        "/solver/shock/welded/sweepsPerLevel", "must be an integer in [1, 100], got 0"},
       {"welded pass field typo", R"({"solver": {"shock": {"welded": {"bodyWeld": false}}}})",

@@ -229,7 +229,7 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
     const std::string q = p + "/shock";
     r.requireObject(*shock, q,
                     {"passes", "sweepsPerLevel", "pairIterations", "restitution", "replacesContactStage",
-                     "pairImpulseTolerance", "levelApproachTolerance", "welded"},
+                     "pairImpulseTolerance", "levelApproachTolerance", "welded", "freeze", "carryTolerance"},
                     "the shock settings");
     if (const json* v = member(*shock, "pairImpulseTolerance")) {
       s.shock.pairImpulseTolerance = r.inRange(*v, q + "/pairImpulseTolerance", 0.0, 1.0);
@@ -238,6 +238,19 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
     if (const json* v = member(*shock, "levelApproachTolerance")) {
       s.shock.levelApproachTolerance = r.nonNegative(*v, q + "/levelApproachTolerance");
     }
+    // Which levels the pass freezes (chapter 12): every level (GBF) or what carries its load.
+    if (member(*shock, "freeze")) {
+      const std::string ptr = q + "/freeze";
+      const std::string word = r.string(*member(*shock, "freeze"), ptr);
+      if (word == "everyLevel") {
+        s.shock.freeze = FreezeRule::EveryLevel;
+      } else if (word == "whenItCarries") {
+        s.shock.freeze = FreezeRule::WhenItCarries;
+      } else {
+        r.fail(ptr, "must be \"everyLevel\" or \"whenItCarries\", got \"" + word + "\"");
+      }
+    }
+    if (const json* v = member(*shock, "carryTolerance")) s.shock.carryTolerance = r.nonNegative(*v, q + "/carryTolerance");
     if (const json* v = member(*shock, "passes")) s.shock.passes = r.integer(*v, q + "/passes", 1, 100);
     if (const json* v = member(*shock, "sweepsPerLevel")) s.shock.sweepsPerLevel = r.integer(*v, q + "/sweepsPerLevel", 1, 100);
     if (const json* v = member(*shock, "pairIterations")) s.shock.pairIterations = r.integer(*v, q + "/pairIterations", 1, 1000);

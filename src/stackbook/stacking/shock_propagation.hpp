@@ -15,6 +15,7 @@
 
 #include "stackbook/stacking/contact_graph.hpp"
 #include "stackbook/stacking/contact_levels.hpp"
+#include "stackbook/stacking/load_carrying.hpp"
 #include "stackbook/stepping/gbf_step.hpp"
 
 namespace stackbook {
@@ -479,6 +480,18 @@ ShockPassReport shockPropagation(World<D>& world, const StepSettings& settings, 
     if (!contactStageRuns(settings, effects)) {  // Eq. (9.9): nothing else resolves them
       graph = withUnpressedContacts<D>(world, graph, graphSettings, &counters.detection);
     }
+    // [freeze_when_it_carries]
+    // Chapter 12: a body that cannot carry its load is joined to its supporters and to the
+    // bodies above it, so the pass sweeps them as one level instead of freezing one under the other.
+    if (settings.shock.freeze == FreezeRule::WhenItCarries && effects.gravity) {
+      const ContactLevels gbfLevels = topologicalLevels(graph);
+      const LoadCarrying<D> carrying =
+          loadCarrying<D>(world, graph, gbfLevels, settings.dt, settings.rotation, settings.detection.narrow,
+                          settings.shock.carryTolerance, &counters.detection);  // Eqs. (12.1)-(12.4)
+      counters.uncarried += carrying.uncarried;
+      if (carrying.uncarried > 0) graph = joinUncarried(graph, carrying.carries, staticBodies<D>(world), gbfLevels);
+    }
+    // [freeze_when_it_carries]
     const ContactLevels levels =
         layering == Layering::Topological ? topologicalLevels(graph) : bfsDepthLevels(graph);
     report.graphSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -571,6 +584,17 @@ inline StepSettings passAsContactStagePatch(StepSettings base = {}, double level
   return base;
 }
 // [pass_patch_settings]
+
+// [carrying_pass_settings]
+/// The carrying pass (chapter 12), the preset "carryingPass" and the default of a scene that
+/// names none: the pass as the contact stage with sticking patches (passAsContactStagePatch())
+/// that freezes only the bodies that carry their load (FreezeRule::WhenItCarries).
+inline StepSettings carryingPass(StepSettings base = {}) {
+  base = passAsContactStagePatch(base);
+  base.shock.freeze = FreezeRule::WhenItCarries;
+  return base;
+}
+// [carrying_pass_settings]
 
 // [gbf_short_loops_settings]
 /// GBF's step with short pair loops (chapter 9, "Short pair loops in GBF's step"): the

@@ -23,22 +23,24 @@ enum class SolverPreset {
   PassAsContactShortLoops,  ///< that with short pair loops: passAsContactStageShortLoops()
   GbfShortLoops,            ///< GBF's step with short pair loops: gbfStepShortLoops()
   PassAsContactPatch,       ///< the pass as the contact stage with sticking patches: passAsContactStagePatch()
-  WeldedPass                ///< GBF's step with short loops and the welded pass: gbfStepWeldedPass()
+  WeldedPass,               ///< GBF's step with short loops and the welded pass: gbfStepWeldedPass()
+  CarryingPass              ///< the pass as the contact stage freezing what carries its load: carryingPass()
 };
 
 /// Every preset with the word a scene names it by, in the order the scene format lists them.
-inline constexpr std::array<std::pair<SolverPreset, std::string_view>, 6> kSolverPresets{{
+inline constexpr std::array<std::pair<SolverPreset, std::string_view>, 7> kSolverPresets{{
     {SolverPreset::Gbf, "gbf"},
     {SolverPreset::PassAsContact, "passAsContact"},
     {SolverPreset::PassAsContactShortLoops, "passAsContactShortLoops"},
     {SolverPreset::GbfShortLoops, "gbfShortLoops"},
     {SolverPreset::PassAsContactPatch, "passAsContactPatch"},
     {SolverPreset::WeldedPass, "weldedPass"},
+    {SolverPreset::CarryingPass, "carryingPass"},
 }};
 
 /// `base` with every field a preset sets put back to GBF's, StepSettings{}'s: the pair caps
 /// and loop tolerances of the three loops, whether the pass replaces the contact stage, its
-/// sweeps, ramp and level tolerance, the welded pass, the cone rule and the impulse point rule. Every preset starts from this, so a preset means the
+/// sweeps, ramp and level tolerance, the welded pass, the freeze rule, the cone rule and the impulse point rule. Every preset starts from this, so a preset means the
 /// same settings whatever `base` came from (a scene that names one preset, timed under another).
 inline StepSettings withGbfLoops(StepSettings base) {
   const StepSettings gbf;
@@ -53,6 +55,8 @@ inline StepSettings withGbfLoops(StepSettings base) {
   base.shock.pairImpulseTolerance = gbf.shock.pairImpulseTolerance;
   base.shock.levelApproachTolerance = gbf.shock.levelApproachTolerance;
   base.shock.welded = gbf.shock.welded;
+  base.shock.freeze = gbf.shock.freeze;
+  base.shock.carryTolerance = gbf.shock.carryTolerance;
   base.impulsePoint.rule = gbf.impulsePoint.rule;
   return base;
 }
@@ -67,6 +71,7 @@ inline StepSettings applySolverPreset(SolverPreset preset, StepSettings base) {
     case SolverPreset::GbfShortLoops: return gbfStepShortLoops(base);
     case SolverPreset::PassAsContactPatch: return passAsContactStagePatch(base);
     case SolverPreset::WeldedPass: return gbfStepWeldedPass(base);
+    case SolverPreset::CarryingPass: return carryingPass(base);
     case SolverPreset::Gbf: break;
   }
   return base;
@@ -75,8 +80,8 @@ inline StepSettings applySolverPreset(SolverPreset preset, StepSettings base) {
 
 // [default_scene_preset]
 /// The preset of a scene that names none, and so of `stackbook run` on such a scene
-/// (chapter 10, "Why the welded pass is the default"). StepSettings{} itself stays GBF's step.
-inline constexpr SolverPreset kDefaultScenePreset = SolverPreset::WeldedPass;
+/// (chapter 12, "The default step"). StepSettings{} itself stays GBF's step.
+inline constexpr SolverPreset kDefaultScenePreset = SolverPreset::CarryingPass;
 // [default_scene_preset]
 
 /// The word a scene names `preset` by.

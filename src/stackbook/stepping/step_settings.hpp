@@ -91,6 +91,17 @@ struct WeldedPassSettings {
 };
 // [welded_settings]
 
+// [freeze_rule]
+/// Which bodies the shock-propagation pass freezes after their level (chapter 12).
+enum class FreezeRule {
+  /// Every level (GBF, Eq. (9.4)): a body is frozen before the bodies above it press on it.
+  EveryLevel,
+  /// Only what carries its load (chapter 12, Eqs. (12.1)-(12.5)): a body whose load from above
+  /// passes outside its support is swept together with its supporters and the bodies above it.
+  WhenItCarries,
+};
+// [freeze_rule]
+
 // [shock_settings]
 /// The knobs of chapter 9's shock-propagation pass (PhysBAM's defaults): each level of the
 /// contact graph is swept `sweepsPerLevel` times with at most `pairIterations` impulses per
@@ -119,6 +130,11 @@ struct ShockSettings {
   double levelApproachTolerance = 0.0;
   /// The welded pass in place of this one (off by default: GBF's pass).
   WeldedPassSettings welded;
+  /// Which levels are frozen (GBF: every level; chapter 12: only what carries its load).
+  FreezeRule freeze = FreezeRule::EveryLevel;
+  /// Under FreezeRule::WhenItCarries, how far (m, >= 0) a body's centre of load may lie outside
+  /// its support region, seen along gravity, and still count as carried (Eq. (12.4)).
+  double carryTolerance = 0.0;
 
   /// The restitution of level sweep l (1-based).
   double restitutionAt(int l) const {
@@ -236,6 +252,8 @@ inline void validateStepSettings(const StepSettings& s, const char* caller = "va
   } else if (!(std::isfinite(s.shock.welded.levelApproachTolerance) && s.shock.welded.levelApproachTolerance >= 0.0)) {
     msg << "shock.welded.levelApproachTolerance must be finite and >= 0, got "
         << s.shock.welded.levelApproachTolerance;
+  } else if (!(std::isfinite(s.shock.carryTolerance) && s.shock.carryTolerance >= 0.0)) {
+    msg << "shock.carryTolerance must be finite and >= 0, got " << s.shock.carryTolerance;
   } else if (s.shock.passes < 1) {
     msg << "shock.passes must be >= 1, got " << s.shock.passes;
   } else if (s.shock.sweepsPerLevel < 1) {
