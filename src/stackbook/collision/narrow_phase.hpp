@@ -307,6 +307,10 @@ enum class SurfaceQuery {
   /// The samples and, for shapes that have it, the exact deepest point (Eq. (11.6)); a
   /// strictly convex shape (sphere, disk) is tested at its deepest point alone.
   DeepestPoint,
+  /// DeepestPoint for the shapes with a curved surface (Shape::roundSurface(): sphere, disk,
+  /// capsule, a 3D cylinder) and Samples for every other shape, so that a pair of boxes or
+  /// meshes costs what it costs under Samples, bit for bit (chapter 12's default).
+  RoundShapes,
 };
 // [surface_query]
 
@@ -333,6 +337,18 @@ struct NarrowPhaseSettings {
   double candidateReach = 0.002;
 };
 
+/// True when a pair of these shapes asks an exact deepest point under `settings`, so that its
+/// tests go through pairInterference() rather than the lazy search over samples.
+template <int D>
+bool pairAsksDeepestPoint(const NarrowPhaseSettings& settings, const Shape<D>& a, const Shape<D>& b) {
+  switch (settings.surfaceQuery) {
+    case SurfaceQuery::Samples: return false;
+    case SurfaceQuery::DeepestPoint: return true;
+    case SurfaceQuery::RoundShapes: return a.roundSurface() || b.roundSurface();
+  }
+  return true;
+}
+
 namespace detail {
 
 // [append_deepest_point]
@@ -345,7 +361,10 @@ bool appendDeepestPoint(const CollisionBody<D>& owner, int ownerIndex,
                         const Vec<D>& t, std::vector<InterferenceSample<D>>& out,
                         const NarrowPhaseSettings& settings, std::int64_t& queries,
                         std::int64_t& found) {
-  if (settings.surfaceQuery != SurfaceQuery::DeepestPoint) return false;
+  if (!(settings.surfaceQuery == SurfaceQuery::DeepestPoint ||
+        (settings.surfaceQuery == SurfaceQuery::RoundShapes && owner.shape->roundSurface()))) {
+    return false;
+  }
   const Shape<D>& shapeB = *penetrated.shape;
   Vec<D> p = Vec<D>::Zero();
   if (!owner.shape->deepestPoint(shapeB, M, t, p)) return false;

@@ -79,6 +79,8 @@ struct SphereSdf {
   }
   /// Strictly convex: the point farthest along d is unique and is the whole contact.
   static constexpr bool strictlyConvex = true;
+  /// Curved all over (SurfaceQuery::RoundShapes).
+  static constexpr bool round = true;
   std::string describe() const {
     std::ostringstream out;
     out << (D == 3 ? "sphere" : "disk") << " r = " << radius;
@@ -127,6 +129,8 @@ struct BoxSdf {
     return p;
   }
   static constexpr bool strictlyConvex = false;
+  /// Flat faces only: its samples hold its corners and edges exactly.
+  static constexpr bool round = false;
   std::string describe() const {
     std::ostringstream out;
     out << (D == 3 ? "box " : "rectangle ");
@@ -231,6 +235,8 @@ struct CapsuleSdf {
     return n > 0.0 ? Vec<D>(p + radius * d / n) : p;
   }
   static constexpr bool strictlyConvex = false;
+  /// Its caps (and in 3D its side) are curved.
+  static constexpr bool round = true;
   std::string describe() const {
     std::ostringstream out;
     out << "capsule half-length " << halfLength << " r = " << radius;
@@ -300,6 +306,8 @@ struct CylinderSdf {
     return p;
   }
   static constexpr bool strictlyConvex = false;
+  /// Its side is curved in 3D; in 2D it is a rectangle.
+  static constexpr bool round = D == 3;
   std::string describe() const {
     std::ostringstream out;
     out << (D == 3 ? "cylinder" : "rectangle (cylinder section)") << " r = " << radius
@@ -380,6 +388,13 @@ class AnalyticShape final : public Shape<D> {
   bool deepestPointIsWholeContact() const override {
     if constexpr (requires { Sdf::strictlyConvex; }) {
       return Sdf::strictlyConvex;
+    } else {
+      return false;
+    }
+  }
+  bool roundSurface() const override {
+    if constexpr (requires { Sdf::round; }) {
+      return Sdf::round;
     } else {
       return false;
     }

@@ -50,6 +50,11 @@ class Shape {
   /// convex shape: sphere, disk), so that it may replace the surface samples.
   virtual bool deepestPointIsWholeContact() const { return false; }
 
+  /// True when part of this shape's surface is curved (sphere, disk, capsule, a cylinder's side
+  /// in 3D), where fixed samples make it a polygon: SurfaceQuery::RoundShapes asks the exact
+  /// deepest point of these shapes only (chapter 12).
+  virtual bool roundSurface() const { return false; }
+
   /// Boxes around runs of consecutive surface samples (chapter 7, "Skipping far samples"),
   /// built with the shape; null for a shape without them, whose samples the narrow phase
   /// then transforms one by one.

@@ -196,8 +196,17 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
                         RotationUpdate::ImplicitMidpoint);
   }
   if (member(solver, "surfaceQuery")) {
-    s.detection.narrow.surfaceQuery =
-        choose("surfaceQuery", "samples", SurfaceQuery::Samples, "deepestPoint", SurfaceQuery::DeepestPoint);
+    const std::string ptr = p + "/surfaceQuery";
+    const std::string word = r.string(*member(solver, "surfaceQuery"), ptr);
+    if (word == "samples") {
+      s.detection.narrow.surfaceQuery = SurfaceQuery::Samples;
+    } else if (word == "deepestPoint") {
+      s.detection.narrow.surfaceQuery = SurfaceQuery::DeepestPoint;
+    } else if (word == "roundShapes") {
+      s.detection.narrow.surfaceQuery = SurfaceQuery::RoundShapes;
+    } else {
+      r.fail(ptr, "must be \"samples\", \"deepestPoint\" or \"roundShapes\", got \"" + word + "\"");
+    }
   }
   // The order of a sweep's pairs (chapter 10, "Colours"): unlike threads, it changes the result.
   if (member(solver, "pairOrder")) {

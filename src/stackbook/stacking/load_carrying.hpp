@@ -13,6 +13,7 @@
 #include <numeric>
 #include <vector>
 
+#include "stackbook/collision/candidate_list_store.hpp"
 #include "stackbook/collision/narrow_phase.hpp"
 #include "stackbook/stacking/contact_graph.hpp"
 #include "stackbook/stacking/contact_levels.hpp"
@@ -149,11 +150,13 @@ struct LoadCarrying {
 /// supporters (within `tolerance`). Patches are the interference samples of each graph edge
 /// at the poses the graph was built from (`views`: x + dt v), the upper body advanced by
 /// dt^2 g as worldContactGraph() advances it. No gravity: every body carries. O(edges) pair
-/// queries.
+/// queries; with `kept` (the world's candidate lists, chapter 7) each pair of samples asks
+/// through its kept lists, which find the same samples in the same order.
 template <int D>
 LoadCarrying<D> loadCarrying(const World<D>& world, const ContactGraph& graph, const ContactLevels& levels,
                           double dt, RotationUpdate rotation, const NarrowPhaseSettings& narrow,
-                          double tolerance, DetectionCounters* counters = nullptr) {
+                          double tolerance, DetectionCounters* counters = nullptr,
+                          CandidateListStore<D>* kept = nullptr) {
   const std::size_t n = world.bodies.size();
   using Flat = typename SupportRegion<D>::Flat;
   LoadCarrying<D> result;
@@ -165,6 +168,9 @@ LoadCarrying<D> loadCarrying(const World<D>& world, const ContactGraph& graph, c
   const SupportFrame<D> frame(world.gravity);
   std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, dt, rotation);
   // The support patch of each edge below -> above, seen along gravity.
+  std::vector<InterferenceCandidate<D>> scratch;
+  std::vector<InterferenceSample<D>> samples;
+  PairCandidateLists<D> lists;
   const auto patch = [&](int below, int above) {
     std::vector<Flat> points;
     const std::size_t k = static_cast<std::size_t>(above);
@@ -172,9 +178,16 @@ LoadCarrying<D> loadCarrying(const World<D>& world, const ContactGraph& graph, c
     advanceVelocity<D>(advanced, dt, world.loads(above));  // as the graph's test, Eq. (5.7)
     const CollisionBody<D> saved = views[k];
     views[k] = collisionBodyAt<D>(advanced, *world.shapes[k], predictPose<D>(advanced, dt, rotation));
-    for (const InterferenceSample<D>& s : pairInterference<D>(views, BodyPair{below, above}, narrow, counters)) {
-      points.push_back(frame.flat(s.point));
+    const BodyPair pair{below, above};
+    if (pairAsksDeepestPoint<D>(narrow, *world.shapes[static_cast<std::size_t>(below)], *world.shapes[k])) {
+      samples = pairInterference<D>(views, pair, narrow, counters);  // chapter 11's exact points
+    } else {
+      const bool have = kept != nullptr && kept->swapFor(below, above, lists);
+      if (!have) lists.firstInSecond.made = lists.secondInFirst.made = false;
+      pairInterferenceListed<D>(views, pair, narrow, counters, scratch, samples, &lists);
+      if (have) kept->swapFor(below, above, lists);  // given back, for the pass
     }
+    for (const InterferenceSample<D>& s : samples) points.push_back(frame.flat(s.point));
     views[k] = saved;
     return points;
   };

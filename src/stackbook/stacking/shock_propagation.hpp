@@ -74,9 +74,14 @@ ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings
   // pair order afterwards, so they come out in the serial order whatever the threads.
   const std::size_t count = candidates.size();
   std::vector<unsigned char> rests(count, 0);
-  const bool lazy = settings.narrow.surfaceQuery == SurfaceQuery::Samples;
+  // A pair that asks an exact deepest point (chapter 11) needs the full query, which moves the
+  // shared views: such a world builds its graph on one thread.
+  bool anyExact = settings.narrow.surfaceQuery == SurfaceQuery::DeepestPoint;
+  for (int p = 0; p < n && !anyExact && settings.narrow.surfaceQuery == SurfaceQuery::RoundShapes; ++p) {
+    anyExact = world.shapes[static_cast<std::size_t>(p)]->roundSurface();
+  }
   // Blocks of consecutive pairs, each counted and caught on its own (in block order below).
-  const int threads = lazy ? resolvedThreadCount(settings.parallel.threads) : 1;
+  const int threads = anyExact ? 1 : resolvedThreadCount(settings.parallel.threads);
   const std::size_t tasks = static_cast<std::size_t>(threads) *
                             static_cast<std::size_t>(std::max(settings.parallel.runsPerThread, 1));
   const std::size_t grain = std::max<std::size_t>(static_cast<std::size_t>(std::max(settings.parallel.minPairs, 1)),
@@ -96,6 +101,8 @@ ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings
         for (std::size_t k = block * grain; k < std::min(count, (block + 1) * grain); ++k) {
           const BodyPair& pair = candidates[k];
           lists.firstInSecond.made = lists.secondInFirst.made = false;  // a new pair: none yet
+          const bool lazy = !pairAsksDeepestPoint<D>(settings.narrow, *world.shapes[static_cast<std::size_t>(pair.first)],
+                                                     *world.shapes[static_cast<std::size_t>(pair.second)]);
           // [graph_direction_test]
           for (int side = 0; side < 2; ++side) {
             const int p = side == 0 ? pair.first : pair.second;
@@ -485,9 +492,10 @@ ShockPassReport shockPropagation(World<D>& world, const StepSettings& settings, 
     // bodies above it, so the pass sweeps them as one level instead of freezing one under the other.
     if (settings.shock.freeze == FreezeRule::WhenItCarries && effects.gravity) {
       const ContactLevels gbfLevels = topologicalLevels(graph);
+      world.candidateLists.matchShapes(world.shapes);
       const LoadCarrying<D> carrying =
           loadCarrying<D>(world, graph, gbfLevels, settings.dt, settings.rotation, settings.detection.narrow,
-                          settings.shock.carryTolerance, &counters.detection);  // Eqs. (12.1)-(12.4)
+                          settings.shock.carryTolerance, &counters.detection, &world.candidateLists);  // Eqs. (12.1)-(12.4)
       counters.uncarried += carrying.uncarried;
       if (carrying.uncarried > 0) graph = joinUncarried(graph, carrying.carries, staticBodies<D>(world), gbfLevels);
     }
@@ -588,10 +596,14 @@ inline StepSettings passAsContactStagePatch(StepSettings base = {}, double level
 // [carrying_pass_settings]
 /// The carrying pass (chapter 12), the preset "carryingPass" and the default of a scene that
 /// names none: the pass as the contact stage with sticking patches (passAsContactStagePatch())
-/// that freezes only the bodies that carry their load (FreezeRule::WhenItCarries).
+/// that freezes only the bodies that carry their load (FreezeRule::WhenItCarries), with chapter
+/// 11's accurate knobs where they are cheap: the implicit midpoint rotation rule and exact
+/// deepest points for round shapes (SurfaceQuery::RoundShapes; boxes and meshes keep samples).
 inline StepSettings carryingPass(StepSettings base = {}) {
   base = passAsContactStagePatch(base);
   base.shock.freeze = FreezeRule::WhenItCarries;
+  base.rotation = RotationUpdate::ImplicitMidpoint;
+  base.detection.narrow.surfaceQuery = SurfaceQuery::RoundShapes;
   return base;
 }
 // [carrying_pass_settings]

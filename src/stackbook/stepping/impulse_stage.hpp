@@ -165,6 +165,9 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
   thread_local std::vector<InterferenceCandidate<D>> scratch;
   thread_local std::vector<InterferenceSample<D>> samples;  // the centre rule's, reused likewise
   double firstImpulse = 0.0;  // |j| of the visit's first impulse (pairImpulseTolerance)
+  // An exact deepest point (chapter 11) is found by pairInterference() alone.
+  const bool exactPair = pairAsksDeepestPoint<D>(settings.detection.narrow, *views[static_cast<std::size_t>(pair.first)].shape,
+                                                 *views[static_cast<std::size_t>(pair.second)].shape);
   // After each impulse of size `magnitude`: re-predict the pair, and say whether the visit
   // has converged.
   const auto repredict = [&](int iteration, double magnitude) {
@@ -200,7 +203,7 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
     // pairInterference()'s samples with the same bits. The exact deepest points of chapter
     // 11 are found by pairInterference() alone.  // [pair_deepest_impulse]
     std::optional<InterferenceSample<D>> point;
-    if (settings.detection.narrow.surfaceQuery != SurfaceQuery::Samples) {
+    if (exactPair) {
       point = impulsePoint<D>(pairInterference<D>(views, pair, settings.detection.narrow, &counters.detection),
                               views, settings.impulsePoint);  // Eqs. (7.6), (8.10)
     } else if (settings.impulsePoint.rule == ImpulsePointRule::Deepest) {
@@ -224,8 +227,7 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
     const double e = spec.restitution(sweep, material);
     // [pair_patch_impulse]
     // The sticking patch (Eq. (8.16)) is tried first; if it holds, it is the visit's impulse.
-    if (settings.impulsePoint.rule == ImpulsePointRule::StickingPatch && spec.friction &&
-        settings.detection.narrow.surfaceQuery == SurfaceQuery::Samples) {
+    if (settings.impulsePoint.rule == ImpulsePointRule::StickingPatch && spec.friction && !exactPair) {
       const double welded = applyPatchImpulse<D>(world, views, pair, s, samples, e, material.friction, spec,
                                                  settings, counters);
       if (welded >= 0.0) {
