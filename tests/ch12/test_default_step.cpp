@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,38 @@ double largestMove(const World<D>& start, const World<D>& now) {
 template <int D>
 World<D> sceneWorld(const Scene& scene) {
   return std::get<SceneBodies<D>>(scene.bodies).world;
+}
+
+
+/// Every bundled scene except the full-size ones ("_full.json": the piles of 1000 bodies),
+/// sorted by file name.
+std::vector<std::filesystem::path> bundledScenes() {
+  std::vector<std::filesystem::path> out;
+  for (const auto& entry : std::filesystem::directory_iterator(STACKBOOK_SCENES_DIR)) {
+    const std::string name = entry.path().filename().string();
+    const bool full = name.size() > 10 && name.compare(name.size() - 10, 10, "_full.json") == 0;
+    if (entry.path().extension() == ".json" && !full) out.push_back(entry.path());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+/// Runs a scene for its duration and returns the largest rise of its energy over the start at
+/// any step, in units of the tier for invariants: 1e-9 of the energy's scale per step taken
+/// (the scale: the largest of |E|, |potential| and kinetic at the start).
+template <int D>
+double energyRiseInTier(const Scene& scene) {
+  World<D> world = sceneWorld<D>(scene);
+  const EnergyReport e0 = worldEnergy<D>(world);
+  const double scale = std::max({std::abs(e0.total()), std::abs(e0.potential), e0.kinetic, 1e-12});
+  const long steps = std::lround(scene.duration / scene.settings.dt);
+  double worst = 0.0;
+  for (long n = 1; n <= steps; ++n) {
+    stackingStep<D>(world, scene.settings);
+    const double rise = worldEnergy<D>(world).total() - e0.total();
+    worst = std::max(worst, rise / (1e-9 * scale * static_cast<double>(n)));
+  }
+  return worst;
 }
 
 }  // namespace
@@ -174,6 +207,20 @@ TEST_CASE("GBF's seesaw tips under the default as under GBF's step and the card 
   CHECK(gain <= 0.0);
 }
 // [seesaw_default_test]
+
+// [bundled_energy_test]
+TEST_CASE("Under the default no bundled scene's energy rises above its start") {
+  // Every bundled scene but the full-size piles, with its preset replaced by the default, for its
+  // whole duration: the energy (Eq. (10.4), as in energy.csv) never rises above its start by more
+  // than the tier for invariants allows, 1e-9 of its scale per step taken.
+  for (const auto& path : bundledScenes()) {
+    CAPTURE(path.filename().string());
+    const Scene scene = loadScene(path.string(), {"solver.preset=\"carryingPass\""});
+    const double rise = scene.dimension == 2 ? energyRiseInTier<2>(scene) : energyRiseInTier<3>(scene);
+    CHECK(rise <= 1.0);
+  }
+}
+// [bundled_energy_test]
 
 // [peer_stacks_test]
 TEST_CASE("The stacks and pyramids peers_bench times stand under the default at 60 Hz for 10 s") {

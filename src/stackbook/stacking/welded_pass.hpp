@@ -341,7 +341,7 @@ StepCounters weldedPassStep(World<D>& world, const StepSettings& settings, Layer
 
 // [scene_step]
 /// The step a scene runs (chapter 10, `stackbook run`): with GBF's order and the welded pass on
-/// (the default of a scene without a preset), weldedPassStep(); otherwise step() in the scene's
+/// (the preset weldedPass, chapter 9), weldedPassStep(); otherwise step() in the scene's
 /// order with `hook` (shock propagation). The traditional order ignores the welded pass.
 template <int D>
 StepCounters sceneStep(World<D>& world, const StepSettings& settings, const PostContactHook<D>& hook) {
