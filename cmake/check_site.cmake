@@ -19,6 +19,9 @@
 # 5. Every `ctest --preset P ... -L X` or `-R X` command in the chapters, the docs pages and
 #    the README selects at least one test (`ctest --preset P -N`, run from ROOT; exercise
 #    entries, which only the exercises preset registers, are matched against the stubs).
+# 6. Every term of docs/glossary_terms.txt that the chapters' prose uses 10 times or more has
+#    the entries it names in docs/glossary.md (cmake/check_glossary.cmake, included here; it
+#    also runs alone: cmake -DROOT=. -P cmake/check_glossary.cmake).
 # Every failure is one line naming the page or file; the script fails if there is any.
 cmake_minimum_required(VERSION 3.25)
 foreach(var SITE ROOT BUILD)
@@ -309,10 +312,13 @@ foreach(source IN LISTS text_sources)
   endforeach()
 endforeach()
 
+# --- 6. the glossary's terms ---------------------------------------------------------------
+include("${CMAKE_CURRENT_LIST_DIR}/check_glossary.cmake")
+
 list(LENGTH pages page_count)
 list(LENGTH checked command_count)
 get_property(problems GLOBAL PROPERTY site_problems)
 if(problems GREATER 0)
   message(FATAL_ERROR "check_site: ${problems} problems in ${page_count} pages")
 endif()
-message(STATUS "check_site: ${page_count} pages and ${command_count} ctest commands checked, no problems")
+message(STATUS "check_site: ${page_count} pages, ${command_count} ctest commands and ${glossary_term_count} glossary terms checked, no problems")

@@ -1,7 +1,13 @@
-// Chapter 1 exercises. Skipped by default; run them with
+// Chapter 1 exercises: suite ch01_exercises, skipped by default. The exercises preset builds
+// them into build/exercises/tests/ch01/test_ch01_exercises. It registers one CTest entry per
+// exercise, ex01.1 to ex01.3, with the labels exercise and ch01. Run all of them, or one, with
 //   ctest --preset exercises -L ch01
+//   ctest --preset exercises -R ex01.2
+// An entry runs its tests once its stub has no "// TODO(reader)" comment left. The binary
+// runs them at any time:
 //   build/exercises/tests/ch01/test_ch01_exercises --no-skip -ts=ch01_exercises -tc="Exercise 1.2*"
 // They fail until you solve the exercise (the stub returns a neutral value).
+// The main build runs them against the reference solutions: ctest --preset solutions -L ch01
 #include <cmath>
 #include <limits>
 

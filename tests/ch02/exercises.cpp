@@ -1,6 +1,12 @@
-// Chapter 2 exercises. Skipped by default; run them with
+// Chapter 2 exercises: suite ch02_exercises, skipped by default. The exercises preset builds
+// them into build/exercises/tests/ch02/test_ch02_exercises. It registers one CTest entry per
+// exercise, ex02.1 to ex02.4, with the labels exercise and ch02. Run all of them, or one, with
 //   ctest --preset exercises -L ch02
-// or  build/exercises/tests/ch02/test_ch02_exercises --no-skip -ts=ch02_exercises -tc="Exercise 2.3*"
+//   ctest --preset exercises -R ex02.3
+// An entry runs its tests once its stub has no "// TODO(reader)" comment left. The binary
+// runs them at any time:
+//   build/exercises/tests/ch02/test_ch02_exercises --no-skip -ts=ch02_exercises -tc="Exercise 2.3*"
+// The main build runs them against the reference solutions: ctest --preset solutions -L ch02
 #include <algorithm>
 #include <array>
 #include <cmath>

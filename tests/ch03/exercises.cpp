@@ -1,8 +1,14 @@
-// Chapter 3 exercises. Skipped by default; run them with
+// Chapter 3 exercises: suite ch03_exercises, skipped by default. The exercises preset builds
+// them into build/exercises/tests/ch03/test_ch03_exercises. It registers one CTest entry per
+// exercise, ex03.1 to ex03.3, with the labels exercise and ch03. Run all of them, or one, with
 //   ctest --preset exercises -L ch03
-// or  build/exercises/tests/ch03/test_ch03_exercises --no-skip -ts=ch03_exercises
+//   ctest --preset exercises -R ex03.2
+// An entry runs its tests once its stub has no "// TODO(reader)" comment left. The binary
+// runs them at any time:
+//   build/exercises/tests/ch03/test_ch03_exercises --no-skip -ts=ch03_exercises -tc="Exercise 3.2*"
 // They fail with the stubs in src/stackbook/exercises/ and pass with the reference
 // solutions in chapters/solutions/.
+// The main build runs them against the reference solutions: ctest --preset solutions -L ch03
 #include <doctest/doctest.h>
 
 #include <cmath>

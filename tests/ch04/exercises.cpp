@@ -1,7 +1,12 @@
-// Chapter 4 exercises. Skipped by default; run them against your code with
+// Chapter 4 exercises: suite ch04_exercises, skipped by default. The exercises preset builds
+// them into build/exercises/tests/ch04/test_ch04_exercises. It registers one CTest entry per
+// exercise, ex04.1 to ex04.3, with the labels exercise and ch04. Run all of them, or one, with
 //   ctest --preset exercises -L ch04
-// or one exercise with
+//   ctest --preset exercises -R ex04.1
+// An entry runs its tests once its stub has no "// TODO(reader)" comment left. The binary
+// runs them at any time:
 //   build/exercises/tests/ch04/test_ch04_exercises --no-skip -ts=ch04_exercises -tc="Exercise 4.1*"
+// The main build runs them against the reference solutions: ctest --preset solutions -L ch04
 #include <doctest/doctest.h>
 
 #include <cmath>

@@ -1,6 +1,12 @@
-// Chapter 5 exercises. Skipped by default; run them with
+// Chapter 5 exercises: suite ch05_exercises, skipped by default. The exercises preset builds
+// them into build/exercises/tests/ch05/test_ch05_exercises. It registers one CTest entry per
+// exercise, ex05.1 to ex05.3, with the labels exercise and ch05. Run all of them, or one, with
 //   ctest --preset exercises -L ch05
-// or  build/exercises/tests/ch05/test_ch05_exercises --no-skip -ts=ch05_exercises -tc="Exercise 5.1*"
+//   ctest --preset exercises -R ex05.1
+// An entry runs its tests once its stub has no "// TODO(reader)" comment left. The binary
+// runs them at any time:
+//   build/exercises/tests/ch05/test_ch05_exercises --no-skip -ts=ch05_exercises -tc="Exercise 5.1*"
+// The main build runs them against the reference solutions: ctest --preset solutions -L ch05
 #include <doctest/doctest.h>
 
 #include <cmath>

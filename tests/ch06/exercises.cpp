@@ -1,6 +1,12 @@
-// Chapter 6 exercises. Skipped by default; run them with
+// Chapter 6 exercises: suite ch06_exercises, skipped by default. The exercises preset builds
+// them into build/exercises/tests/ch06/test_ch06_exercises. It registers one CTest entry per
+// exercise, ex06.1 to ex06.3, with the labels exercise and ch06. Run all of them, or one, with
 //   ctest --preset exercises -L ch06
-// or  build/exercises/tests/ch06/test_ch06_exercises --no-skip -ts=ch06_exercises -tc="Exercise 6.1*"
+//   ctest --preset exercises -R ex06.1
+// An entry runs its tests once its stub has no "// TODO(reader)" comment left. The binary
+// runs them at any time:
+//   build/exercises/tests/ch06/test_ch06_exercises --no-skip -ts=ch06_exercises -tc="Exercise 6.1*"
+// The main build runs them against the reference solutions: ctest --preset solutions -L ch06
 #include <doctest/doctest.h>
 
 #include <cmath>

@@ -1,7 +1,13 @@
-// Chapter 7 exercises. Skipped by default; run them with
+// Chapter 7 exercises: suite ch07_exercises, skipped by default. The exercises preset builds
+// them into build/exercises/tests/ch07/test_ch07_exercises. It registers one CTest entry per
+// exercise, ex07.1 to ex07.3, with the labels exercise and ch07. Run all of them, or one, with
 //   ctest --preset exercises -L ch07
+//   ctest --preset exercises -R ex07.2
+// An entry runs its tests once its stub has no "// TODO(reader)" comment left. The binary
+// runs them at any time:
 //   build/exercises/tests/ch07/test_ch07_exercises --no-skip -ts=ch07_exercises -tc="Exercise 7.2*"
 // They fail until you solve the exercise (the stub returns a neutral value).
+// The main build runs them against the reference solutions: ctest --preset solutions -L ch07
 #include <doctest/doctest.h>
 
 #include <algorithm>

@@ -1,7 +1,13 @@
-// Chapter 8 exercises. Skipped by default; run them with
+// Chapter 8 exercises: suite ch08_exercises, skipped by default. The exercises preset builds
+// them into build/exercises/tests/ch08/test_ch08_exercises. It registers one CTest entry per
+// exercise, ex08.1 to ex08.3, with the labels exercise and ch08. Run all of them, or one, with
 //   ctest --preset exercises -L ch08
+//   ctest --preset exercises -R ex08.1
+// An entry runs its tests once its stub has no "// TODO(reader)" comment left. The binary
+// runs them at any time:
 //   build/exercises/tests/ch08/test_ch08_exercises --no-skip -ts=ch08_exercises -tc="Exercise 8.1*"
 // They fail until you solve the exercise (the stub returns a neutral value).
+// The main build runs them against the reference solutions: ctest --preset solutions -L ch08
 #include <doctest/doctest.h>
 
 #include <algorithm>

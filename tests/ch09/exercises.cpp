@@ -1,7 +1,13 @@
-// Chapter 9 exercises. Skipped by default; run them with
+// Chapter 9 exercises: suite ch09_exercises, skipped by default. The exercises preset builds
+// them into build/exercises/tests/ch09/test_ch09_exercises. It registers one CTest entry per
+// exercise, ex09.1 to ex09.3, with the labels exercise and ch09. Run all of them, or one, with
 //   ctest --preset exercises -L ch09
+//   ctest --preset exercises -R ex09.2
+// An entry runs its tests once its stub has no "// TODO(reader)" comment left. The binary
+// runs them at any time:
 //   build/exercises/tests/ch09/test_ch09_exercises --no-skip -ts=ch09_exercises -tc="Exercise 9.2*"
 // They fail until you solve the exercise (the stub returns a neutral value).
+// The main build runs them against the reference solutions: ctest --preset solutions -L ch09
 #include <doctest/doctest.h>
 
 #include <cstddef>

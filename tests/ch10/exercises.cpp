@@ -1,7 +1,13 @@
-// Chapter 10 exercises. Skipped by default; run them with
+// Chapter 10 exercises: suite ch10_exercises, skipped by default. The exercises preset builds
+// them into build/exercises/tests/ch10/test_ch10_exercises. It registers one CTest entry per
+// exercise, ex10.1 to ex10.3, with the labels exercise and ch10. Run all of them, or one, with
 //   ctest --preset exercises -L ch10
+//   ctest --preset exercises -R ex10.1
+// An entry runs its tests once its stub has no "// TODO(reader)" comment left. The binary
+// runs them at any time:
 //   build/exercises/tests/ch10/test_ch10_exercises --no-skip -ts=ch10_exercises -tc="Exercise 10.1*"
 // They fail until you solve the exercise (the stubs return empty results and write nothing).
+// The main build runs them against the reference solutions: ctest --preset solutions -L ch10
 #include <doctest/doctest.h>
 
 #include <cmath>

@@ -1,7 +1,13 @@
-// Chapter 11 exercises. Skipped by default; run them with
+// Chapter 11 exercises: suite ch11_exercises, skipped by default. The exercises preset builds
+// them into build/exercises/tests/ch11/test_ch11_exercises. It registers one CTest entry per
+// exercise, ex11.1 to ex11.4, with the labels exercise and ch11. Run all of them, or one, with
 //   ctest --preset exercises -L ch11
+//   ctest --preset exercises -R ex11.1
+// An entry runs its tests once its stub has no "// TODO(reader)" comment left. The binary
+// runs them at any time:
 //   build/exercises/tests/ch11/test_ch11_exercises --no-skip -ts=ch11_exercises -tc="Exercise 11.1*"
 // They fail until you solve the exercise (the stubs return empty or negative results).
+// The main build runs them against the reference solutions: ctest --preset solutions -L ch11
 #include <doctest/doctest.h>
 
 #include <cmath>

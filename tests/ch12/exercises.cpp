@@ -1,7 +1,13 @@
-// Chapter 12 exercises. Skipped by default; run them with
+// Chapter 12 exercises: suite ch12_exercises, skipped by default. The exercises preset builds
+// them into build/exercises/tests/ch12/test_ch12_exercises. It registers one CTest entry per
+// exercise, ex12.1 to ex12.2, with the labels exercise and ch12. Run all of them, or one, with
 //   ctest --preset exercises -L ch12
+//   ctest --preset exercises -R ex12.1
+// An entry runs its tests once its stub has no "// TODO(reader)" comment left. The binary
+// runs them at any time:
 //   build/exercises/tests/ch12/test_ch12_exercises --no-skip -ts=ch12_exercises -tc="Exercise 12.1*"
 // They fail until you solve the exercise (the stub returns a neutral value).
+// The main build runs them against the reference solutions: ctest --preset solutions -L ch12
 #include <doctest/doctest.h>
 
 #include <cmath>
