@@ -40,7 +40,7 @@ int main() {
                 loads.centre[i][0], lo, hi, loads.carries[i] != 0 ? "yes" : "**no**", gbfLevels.levelOfBody[i],
                 joined.levelOfBody[i]);
   }
-  std::printf("\nTable: A19's tower at rest under the carrying pass's test, box 10 at the top; box 1 stands on the ground.\n");
+  std::printf("\nTable: the leaning tower at rest under the carrying pass's test, box 10 at the top; box 1 stands on the ground.\n");
 
   Svg svg(560, 560, "A19's tower: each box's centre of load and support region, green where it carries its load");
   const View v = View::equal(20, 20, 520, 520, -1.2, 3.0, -0.3, 10.3);

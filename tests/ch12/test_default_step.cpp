@@ -145,7 +145,7 @@ TEST_CASE_TEMPLATE("A19 under the default at 60 Hz: ten boxes offset 0.2 fall wi
 // [tower_test]
 
 // [a_frame_test]
-TEST_CASE("A17 under the default: the card A-frame at 25 degrees stands at mu 0.30 and falls at mu 0.15") {
+TEST_CASE("The card A-frame at 25 degrees under the default stands at mu 0.30 and falls at mu 0.15") {
   // mu_req = tan(25 deg) / 2 = 0.2332 (chapter 9): above it the frame stands, below it the feet slide.
   const double beta = 25.0 * M_PI / 180.0;
   const StepSettings settings = defaultAt(1e-3);

@@ -52,7 +52,7 @@ TEST_CASE_TEMPLATE("Eq. (12.4): a box on a box is carried while its centre lies 
 }
 // [two_box_carrying_test]
 
-TEST_CASE_TEMPLATE("Eq. (12.4): in A19's tower boxes 2 to 6 do not carry their load and a straight tower carries all",
+TEST_CASE_TEMPLATE("Eq. (12.4): in the leaning tower boxes 2 to 6 do not carry their load and a straight tower carries all",
                    T, testing::In2D, testing::In3D) {
   constexpr int D = T::value;
   // Offset 0.2 per box, box k centred at x = 0.2 (k - 1). Top down: boxes 10, 9, 8 carry (centres
