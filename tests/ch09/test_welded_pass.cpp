@@ -275,6 +275,7 @@ TEST_CASE("the welded pass gives the same bits for 1, 2 and 4 threads and with a
     settings.dt = 1.0 / 60.0;
     settings.parallel.threads = threads;
     settings.parallel.minPairs = 1;
+    settings.parallel.graphPairsPerTask = 1;
     settings.contactRecorder = recorder;
     for (int n = 0; n < 30; ++n) stackingStep<2>(world, settings);
     return testing::stateHash<2>(world);

@@ -168,7 +168,8 @@ ThreadsOutcome checkThreadCounts(const std::string& name, int steps, const std::
   StepSettings settings = scene.settings;
   if (adjust) adjust(settings);
   settings.parallel.minPairs = 2;
-  settings.parallel.bodiesPerTask = 1;  // the per-body loops split too
+  settings.parallel.bodiesPerTask = 1;      // the per-body loops split too
+  settings.parallel.graphPairsPerTask = 2;  // and the contact graph's tests
   settings.parallel.threads = 1;
   const ThreadsOutcome one = threadsRunScene(scene, settings, steps);
   CHECK(one.islandSweeps == 0);
@@ -191,7 +192,7 @@ void checkGraphThreadCounts(const std::string& name) {
   const Scene scene = loadScene(std::string(STACKBOOK_SCENES_DIR) + "/" + name + ".json");
   const World<D>& world = std::get<SceneBodies<D>>(scene.bodies).world;
   ContactGraphSettings settings = stepGraphSettings(scene.settings, resolveEffects<D>(world, scene.settings.effects));
-  settings.parallel.minPairs = 2;
+  settings.parallel.graphPairsPerTask = 2;
   settings.parallel.threads = 1;
   DetectionCounters one;
   const ContactGraph serial = worldContactGraph<D>(world, settings, &one);

@@ -49,10 +49,12 @@ struct ContactGraphSettings {
 /// x_p + dt (v_p + dt a_p); if p then interferes with body q at a sample where the
 /// relative velocity (p with its new velocity, q with its old one) approaches, the edge
 /// q -> p ("p rests on q") is added. Static bodies are never advanced: they get no
-/// parents. O(pairs) narrow-phase queries, two per broad-phase pair.
+/// parents. O(pairs) narrow-phase queries, two per broad-phase pair. With `kept`, a pair's
+/// queries start from the lists the last stage left for it (chapter 7), and hand them back:
+/// the same graph, with less work.
 template <int D>
 ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings& settings,
-                               DetectionCounters* counters = nullptr) {
+                               DetectionCounters* counters = nullptr, CandidateListStore<D>* kept = nullptr) {
   const int n = world.size();
   std::vector<CollisionBody<D>> views =
       stageViews<D>(world, Lookahead::Velocity, settings.dt, settings.rotation, settings.parallel);
@@ -84,7 +86,7 @@ ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings
   const int threads = anyExact ? 1 : resolvedThreadCount(settings.parallel.threads);
   const std::size_t tasks = static_cast<std::size_t>(threads) *
                             static_cast<std::size_t>(std::max(settings.parallel.runsPerThread, 1));
-  const std::size_t grain = std::max<std::size_t>(static_cast<std::size_t>(std::max(settings.parallel.minPairs, 1)),
+  const std::size_t grain = std::max<std::size_t>(static_cast<std::size_t>(std::max(settings.parallel.graphPairsPerTask, 1)),
                                                   (count + tasks - 1) / tasks);
   const std::size_t blocks = (count + grain - 1) / grain;
   std::vector<DetectionCounters> blockCounters(blocks);
@@ -103,6 +105,8 @@ ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings
           lists.firstInSecond.made = lists.secondInFirst.made = false;  // a new pair: none yet
           const bool lazy = !pairAsksDeepestPoint<D>(settings.narrow, *world.shapes[static_cast<std::size_t>(pair.first)],
                                                      *world.shapes[static_cast<std::size_t>(pair.second)]);
+          // Each pair owns its entry of the store, so blocks on other threads never touch it.
+          const bool have = lazy && kept != nullptr && kept->swapFor(pair.first, pair.second, lists);
           // [graph_direction_test]
           for (int side = 0; side < 2; ++side) {
             const int p = side == 0 ? pair.first : pair.second;
@@ -128,6 +132,7 @@ ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings
             if (approaching) rests[k] |= static_cast<unsigned char>(1u << side);  // edge q -> p
           }
           // [graph_direction_test]
+          if (have) kept->swapFor(pair.first, pair.second, lists);  // given back, for the pass
         }
       } catch (...) {
         errors[block] = std::current_exception();  // the rest of this block is not tested
@@ -160,7 +165,7 @@ ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings
 template <int D>
 ContactGraph withUnpressedContacts(const World<D>& world, const ContactGraph& graph,
                                    const ContactGraphSettings& settings,
-                                   DetectionCounters* counters = nullptr) {
+                                   DetectionCounters* counters = nullptr, CandidateListStore<D>* kept = nullptr) {
   const auto ordered = [](int a, int b) { return a < b ? BodyPair{a, b} : BodyPair{b, a}; };
   std::vector<BodyPair> pressed;
   pressed.reserve(graph.edgeCount());
@@ -168,9 +173,22 @@ ContactGraph withUnpressedContacts(const World<D>& world, const ContactGraph& gr
   std::sort(pressed.begin(), pressed.end());
   const std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, settings.dt, settings.rotation);
   std::vector<ContactPair> edges = graph.edges();
+  std::vector<InterferenceCandidate<D>> scratch;
+  std::vector<InterferenceSample<D>> samples;
+  PairCandidateLists<D> lists;
   for (const BodyPair& p : sweepAndPrune<D>(views, settings.broad, counters)) {  // sorted by (i, j)
     if (std::binary_search(pressed.begin(), pressed.end(), ordered(p.first, p.second))) continue;
-    if (pairInterference<D>(views, p, settings.narrow, counters).empty()) continue;
+    const bool exact = pairAsksDeepestPoint<D>(settings.narrow, *world.shapes[static_cast<std::size_t>(p.first)],
+                                               *world.shapes[static_cast<std::size_t>(p.second)]);
+    if (exact || kept == nullptr) {  // chapter 11's exact points need the full query
+      samples = pairInterference<D>(views, p, settings.narrow, counters);
+    } else {  // the lists the last stage left answer as the full query does (chapter 7)
+      const bool have = kept->swapFor(p.first, p.second, lists);
+      if (!have) lists.firstInSecond.made = lists.secondInFirst.made = false;
+      pairInterferenceListed<D>(views, p, settings.narrow, counters, scratch, samples, &lists);
+      if (have) kept->swapFor(p.first, p.second, lists);
+    }
+    if (samples.empty()) continue;
     const bool firstStatic = world.bodies[static_cast<std::size_t>(p.first)].isStatic();
     const bool secondStatic = world.bodies[static_cast<std::size_t>(p.second)].isStatic();
     if (!firstStatic) edges.push_back(ContactPair{p.second, p.first});  // p.first rests on p.second
@@ -483,16 +501,16 @@ ShockPassReport shockPropagation(World<D>& world, const StepSettings& settings, 
   for (int pass = 0; pass < settings.shock.passes; ++pass) {
     const auto start = std::chrono::steady_clock::now();
     const ContactGraphSettings graphSettings = stepGraphSettings(settings, effects);
-    ContactGraph graph = worldContactGraph<D>(world, graphSettings, &counters.detection);
+    world.candidateLists.matchShapes(world.shapes);
+    ContactGraph graph = worldContactGraph<D>(world, graphSettings, &counters.detection, &world.candidateLists);
     if (!contactStageRuns(settings, effects)) {  // Eq. (9.9): nothing else resolves them
-      graph = withUnpressedContacts<D>(world, graph, graphSettings, &counters.detection);
+      graph = withUnpressedContacts<D>(world, graph, graphSettings, &counters.detection, &world.candidateLists);
     }
     // [freeze_when_it_carries]
     // Chapter 12: a body that cannot carry its load is joined to its supporters and to the
     // bodies above it, so the pass sweeps them as one level instead of freezing one under the other.
     if (settings.shock.freeze == FreezeRule::WhenItCarries && effects.gravity) {
       const ContactLevels gbfLevels = topologicalLevels(graph);
-      world.candidateLists.matchShapes(world.shapes);
       const LoadCarrying<D> carrying =
           loadCarrying<D>(world, graph, gbfLevels, settings.dt, settings.rotation, settings.detection.narrow,
                           settings.shock.carryTolerance, &counters.detection, &world.candidateLists);  // Eqs. (12.1)-(12.4)
@@ -649,7 +667,7 @@ StepCounters stackingStep(World<D>& world, const StepSettings& settings,
 // translation unit that includes this header links to those instead of compiling its own.
 #define STACKBOOK_EXTERN_SHOCK(D)                                                                 \
   extern template ContactGraph worldContactGraph<D>(const World<D>&, const ContactGraphSettings&,  \
-                                                    DetectionCounters*);                           \
+                                                    DetectionCounters*, CandidateListStore<D>*);   \
   extern template ShockPassReport shockPropagation<D>(World<D>&, const StepSettings&,              \
                                                       StageCounters&, Layering, ContactLedger*,    \
                                                       std::vector<ContactPair>*);                  \

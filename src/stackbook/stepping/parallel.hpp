@@ -25,6 +25,10 @@ struct ParallelSettings {
   /// Under PairOrder::Colours, a colour of at least minPairs pairs is cut into this many
   /// runs per thread, so that a thread that finishes early takes another run (>= 1).
   int runsPerThread = 4;
+  /// The contact graph's pair tests (worldContactGraph()) hand each thread at least this many
+  /// pairs, so that a small world builds its graph on one thread: waking a second thread
+  /// costs more than the tests of a few dozen pairs.
+  int graphPairsPerTask = 64;
 };
 // [parallel_settings]
 

@@ -266,6 +266,8 @@ inline void validateStepSettings(const StepSettings& s, const char* caller = "va
     msg << "parallel.minPairs must be >= 0, got " << s.parallel.minPairs;
   } else if (s.parallel.bodiesPerTask < 1) {
     msg << "parallel.bodiesPerTask must be >= 1, got " << s.parallel.bodiesPerTask;
+  } else if (s.parallel.graphPairsPerTask < 1) {
+    msg << "parallel.graphPairsPerTask must be >= 1, got " << s.parallel.graphPairsPerTask;
   } else if (s.parallel.runsPerThread < 1) {
     msg << "parallel.runsPerThread must be >= 1, got " << s.parallel.runsPerThread;
   } else if (!s.shock.restitution.empty() &&
