@@ -29,7 +29,7 @@ namespace stackbook {
   template StepCounters traditionalStep<D>(World<D>&, const StepSettings&,                     \
                                            const PostContactHook<D>&);                         \
   template ContactGraph worldContactGraph<D>(const World<D>&, const ContactGraphSettings&,     \
-                                             DetectionCounters*, CandidateListStore<D>*);      \
+                                             DetectionCounters*, const CandidateListStore<D>*); \
   template ShockPassReport shockPropagation<D>(World<D>&, const StepSettings&, StageCounters&, \
                                                Layering, ContactLedger*, std::vector<ContactPair>*); \
   template StepCounters stackingStep<D>(World<D>&, const StepSettings&, Layering);          \

@@ -57,6 +57,21 @@ struct CandidateListStore {
     }
     return true;
   }
+
+  /// Copies the kept lists of pair {a, b} (in either order) into `copied`, oriented as
+  /// swapFor() orients them, and leaves the store as it is. Returns false, and copies nothing,
+  /// when the store has no entry for the pair. For a query at a pose the stage's lists may not
+  /// cover (the contact graph's advanced bodies): a list remade there stays with the copy, and
+  /// the next stage still finds the one made at its own pose.
+  bool copyFor(int a, int b, PairCandidateLists<D>& copied) const {
+    const BodyPair key{std::min(a, b), std::max(a, b)};
+    const auto at = std::lower_bound(pairs.begin(), pairs.end(), key);
+    if (at == pairs.end() || *at != key) return false;
+    const PairCandidateLists<D>& kept = this->lists[static_cast<std::size_t>(at - pairs.begin())];
+    copied.firstInSecond = a < b ? kept.firstInSecond : kept.secondInFirst;  // reuses the copy's storage
+    copied.secondInFirst = a < b ? kept.secondInFirst : kept.firstInSecond;
+    return true;
+  }
 };
 // [candidate_list_store]
 

@@ -156,7 +156,7 @@ template <int D>
 LoadCarrying<D> loadCarrying(const World<D>& world, const ContactGraph& graph, const ContactLevels& levels,
                           double dt, RotationUpdate rotation, const NarrowPhaseSettings& narrow,
                           double tolerance, DetectionCounters* counters = nullptr,
-                          CandidateListStore<D>* kept = nullptr) {
+                          const CandidateListStore<D>* kept = nullptr) {
   const std::size_t n = world.bodies.size();
   using Flat = typename SupportRegion<D>::Flat;
   LoadCarrying<D> result;
@@ -182,10 +182,11 @@ LoadCarrying<D> loadCarrying(const World<D>& world, const ContactGraph& graph, c
     if (pairAsksDeepestPoint<D>(narrow, *world.shapes[static_cast<std::size_t>(below)], *world.shapes[k])) {
       samples = pairInterference<D>(views, pair, narrow, counters);  // chapter 11's exact points
     } else {
-      const bool have = kept != nullptr && kept->swapFor(below, above, lists);
-      if (!have) lists.firstInSecond.made = lists.secondInFirst.made = false;
+      // A copy: a list remade at the advanced pose stays here, and the pass finds the stage's.
+      if (kept == nullptr || !kept->copyFor(below, above, lists)) {
+        lists.firstInSecond.made = lists.secondInFirst.made = false;
+      }
       pairInterferenceListed<D>(views, pair, narrow, counters, scratch, samples, &lists);
-      if (have) kept->swapFor(below, above, lists);  // given back, for the pass
     }
     for (const InterferenceSample<D>& s : samples) points.push_back(frame.flat(s.point));
     views[k] = saved;

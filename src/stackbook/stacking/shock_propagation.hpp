@@ -50,11 +50,11 @@ struct ContactGraphSettings {
 /// relative velocity (p with its new velocity, q with its old one) approaches, the edge
 /// q -> p ("p rests on q") is added. Static bodies are never advanced: they get no
 /// parents. O(pairs) narrow-phase queries, two per broad-phase pair. With `kept`, a pair's
-/// queries start from the lists the last stage left for it (chapter 7), and hand them back:
-/// the same graph, with less work.
+/// queries start from a copy of the lists the last stage left for it (chapter 7): the same
+/// graph, with less work where they cover the advanced poses, and the store unchanged.
 template <int D>
 ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings& settings,
-                               DetectionCounters* counters = nullptr, CandidateListStore<D>* kept = nullptr) {
+                               DetectionCounters* counters = nullptr, const CandidateListStore<D>* kept = nullptr) {
   const int n = world.size();
   std::vector<CollisionBody<D>> views =
       stageViews<D>(world, Lookahead::Velocity, settings.dt, settings.rotation, settings.parallel);
@@ -105,8 +105,7 @@ ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings
           lists.firstInSecond.made = lists.secondInFirst.made = false;  // a new pair: none yet
           const bool lazy = !pairAsksDeepestPoint<D>(settings.narrow, *world.shapes[static_cast<std::size_t>(pair.first)],
                                                      *world.shapes[static_cast<std::size_t>(pair.second)]);
-          // Each pair owns its entry of the store, so blocks on other threads never touch it.
-          const bool have = lazy && kept != nullptr && kept->swapFor(pair.first, pair.second, lists);
+          if (lazy && kept != nullptr) kept->copyFor(pair.first, pair.second, lists);  // the store is only read
           // [graph_direction_test]
           for (int side = 0; side < 2; ++side) {
             const int p = side == 0 ? pair.first : pair.second;
@@ -132,7 +131,6 @@ ContactGraph worldContactGraph(const World<D>& world, const ContactGraphSettings
             if (approaching) rests[k] |= static_cast<unsigned char>(1u << side);  // edge q -> p
           }
           // [graph_direction_test]
-          if (have) kept->swapFor(pair.first, pair.second, lists);  // given back, for the pass
         }
       } catch (...) {
         errors[block] = std::current_exception();  // the rest of this block is not tested
@@ -667,7 +665,7 @@ StepCounters stackingStep(World<D>& world, const StepSettings& settings,
 // translation unit that includes this header links to those instead of compiling its own.
 #define STACKBOOK_EXTERN_SHOCK(D)                                                                 \
   extern template ContactGraph worldContactGraph<D>(const World<D>&, const ContactGraphSettings&,  \
-                                                    DetectionCounters*, CandidateListStore<D>*);   \
+                                                    DetectionCounters*, const CandidateListStore<D>*); \
   extern template ShockPassReport shockPropagation<D>(World<D>&, const StepSettings&,              \
                                                       StageCounters&, Layering, ContactLedger*,    \
                                                       std::vector<ContactPair>*);                  \
