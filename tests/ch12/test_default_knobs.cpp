@@ -9,18 +9,12 @@
 #include "../support/dimensions.hpp"
 #include "ch09/stack_scenes.hpp"
 #include "stackbook/geometry/analytic_sdf.hpp"
+#include "default_settings.hpp"
 #include "stackbook/stacking/solver_preset.hpp"
 
 using namespace stackbook;
 
 namespace {
-
-/// The default a scene without a preset runs, at time step dt.
-StepSettings defaultStepAt(double dt) {
-  StepSettings s = applySolverPreset(kDefaultScenePreset, StepSettings{});
-  s.dt = dt;
-  return s;
-}
 
 /// A ball (disk in 2D) of radius 0.25 m and 1 kg, launched at v0 along x with no spin on a static
 /// floor sampled at its corners only, mu for both; returns its speed after `seconds`.
@@ -80,7 +74,7 @@ TEST_CASE("Under the default a free box tumbling about its middle axis keeps its
   box.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Vec3(1.0, 2.0, -1.0).normalized()));
   box.setAngularVelocity(box.orientation * Vec3(0.1, 10.0, 0.1));
   world.addBody(box, std::make_shared<BoxShape<3>>(makeBoxShape<3>(Vec3(0.2, 0.4, 0.6))));
-  const StepSettings settings = defaultStepAt(1e-3);
+  const StepSettings settings = testing::defaultStepAt(1e-3);
   const double e0 = world.bodies[0].kineticEnergy();
   double largest = 0.0;
   for (int n = 0; n < 100000; ++n) {
@@ -100,14 +94,14 @@ TEST_CASE_TEMPLATE("Under the default a disk and a ball launched sliding end rol
   // and 0.73 s).
   const double v0 = 5.0;
   const double expected = D == 3 ? 5.0 * v0 / 7.0 : 2.0 * v0 / 3.0;
-  CHECK(speedAfterSlideAndRoll<D>(v0, 0.2, defaultStepAt(1.0 / 60.0), 3.0) == doctest::Approx(expected).epsilon(0.005));
+  CHECK(speedAfterSlideAndRoll<D>(v0, 0.2, testing::defaultStepAt(1.0 / 60.0), 3.0) == doctest::Approx(expected).epsilon(0.005));
 }
 // [default_rolls_test]
 
 TEST_CASE("Round shapes only: a scene of boxes runs under the default exactly as with samples everywhere") {
   // A 2D pyramid of base 6 and a 3D pyramid of 14 cubes at 60 Hz for 1 s: RoundShapes asks no
   // deepest point of a box, so the bits are those of SurfaceQuery::Samples.
-  const StepSettings byDefault = defaultStepAt(1.0 / 60.0);
+  const StepSettings byDefault = testing::defaultStepAt(1.0 / 60.0);
   StepSettings samples = byDefault;
   samples.detection.narrow.surfaceQuery = SurfaceQuery::Samples;
   World<2> a = stacks::pyramid2d(6, Material{0.0, 0.6, 0.0});

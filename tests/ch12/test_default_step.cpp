@@ -15,18 +15,12 @@
 #include "ch09/stack_scenes.hpp"
 #include "stackbook/scene/scene.hpp"
 #include "stackbook/scene/simulation.hpp"
+#include "default_settings.hpp"
 #include "stackbook/stacking/solver_preset.hpp"
 
 using namespace stackbook;
 
 namespace {
-
-/// The default a scene without a preset runs, at time step dt.
-StepSettings defaultAt(double dt) {
-  StepSettings s = applySolverPreset(kDefaultScenePreset, StepSettings{});
-  s.dt = dt;
-  return s;
-}
 
 /// Runs `seconds` of `settings`; returns the largest rise of kinetic plus potential energy
 /// (Eq. (10.4)) over its start at any step.
@@ -132,7 +126,7 @@ TEST_CASE_TEMPLATE("A19 under the default at 60 Hz: ten boxes offset 0.2 fall wi
   // Offset 0.2: the boxes above box 5 have their centre of mass past its edge, so the top box
   // (start height 9.5 m) must come down: below 2 m within 3 s (Box2D drops it to 0.92 m).
   // Offset 0.08: the centre of mass of every part lies over its support, and nothing moves 1 mm.
-  const StepSettings settings = defaultAt(1.0 / 60.0);
+  const StepSettings settings = testing::defaultStepAt(1.0 / 60.0);
   World<D> falls = stacks::boxStack<D>(10, Material{0.0, 0.6, 0.0}, 0.2);
   runFor<D>(falls, settings, 3.0);
   CHECK(falls.bodies[10].position[D - 1] < 2.0);
@@ -148,7 +142,7 @@ TEST_CASE_TEMPLATE("A19 under the default at 60 Hz: ten boxes offset 0.2 fall wi
 TEST_CASE("The card A-frame at 25 degrees under the default stands at mu 0.30 and falls at mu 0.15") {
   // mu_req = tan(25 deg) / 2 = 0.2332 (chapter 9): above it the frame stands, below it the feet slide.
   const double beta = 25.0 * M_PI / 180.0;
-  const StepSettings settings = defaultAt(1e-3);
+  const StepSettings settings = testing::defaultStepAt(1e-3);
   World<2> stands = stacks::cardFrame(beta, Material{0.0, 0.30, 0.0});
   World<2> falls = stacks::cardFrame(beta, Material{0.0, 0.15, 0.0});
   const World<2> start = stands;
@@ -165,7 +159,7 @@ TEST_CASE("The plank on two stacks and the bundled heavy box on a light one stan
   // The plank rests on a stack of 2 and a stack of 4 (chapter 9's layering case): level within
   // 1e-3 rad after 2 s at dt = 1e-3. The bundled 1000:1 stack (its own settings but the preset): no body moves 1 mm.
   World<2> plank = stacks::plankOnTwoStacks<2>(Material{0.0, 0.5, 0.0});
-  const double gain = runFor<2>(plank, defaultAt(1e-3), 2.0);
+  const double gain = runFor<2>(plank, testing::defaultStepAt(1e-3), 2.0);
   CHECK(stacks::plankTilt<2>(plank) < 1e-3);
   CHECK(gain < 1e-9);
   const Scene heavy = loadScene(std::string(STACKBOOK_SCENES_DIR) + "/heavy_on_light_2d.json");
@@ -228,7 +222,7 @@ TEST_CASE("The stacks and pyramids peers_bench times stand under the default at 
   // 2D pyramid of base 20 (210 boxes); a 3D stack of 10 and a 3D pyramid of 8 levels (204 cubes).
   // No box may move 1 mm and the energy may not rise.
   const Material material{0.0, 0.6, 0.0};
-  const StepSettings settings = defaultAt(1.0 / 60.0);
+  const StepSettings settings = testing::defaultStepAt(1.0 / 60.0);
   std::vector<World<2>> flat;
   for (const int n : {10, 20, 30}) flat.push_back(stacks::boxStack<2>(n, material));
   flat.push_back(stacks::pyramid2d(20, material));
