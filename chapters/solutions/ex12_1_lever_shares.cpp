@@ -1,4 +1,4 @@
-// Exercise 12.1, reference solution: the lever rule (chapter 12, Eq. (12.6)).
+// Exercise 12.1, reference solution: the lever rule (chapter 12, Eq. (12.8)).
 #include "stackbook/exercises/ex12_1_lever_shares.hpp"
 
 #include <cmath>
@@ -34,7 +34,7 @@ std::vector<double> leverShares(double centre, const std::vector<double>& entrie
     for (std::size_t i = 0; i < entries.size(); ++i) shares[i] = entries[i] == a ? 1.0 / count : 0.0;
     return shares;
   }
-  shares[left] = (b - centre) / (b - a);  // Eq. (12.6): moments about the centre balance
+  shares[left] = (b - centre) / (b - a);  // Eq. (12.8): moments about the centre balance
   shares[right] = (centre - a) / (b - a);
   return shares;
 }

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <numbers>
 
+#include "../../tests/ch08/rocking_block.hpp"    // the rocking block of the tests
 #include "../../tests/ch08/scene_builders.hpp"  // the incline of the chapter's tests
 #include "figure_svg.hpp"
 
@@ -97,9 +98,56 @@ void slide() {
   svg.save("ch08_incline_slide.svg");
 }
 
+/// Figure 8.2: a block rocking about corner A lands on corner B (Eq. (8.20)). Left: just
+/// before the landing, turning about A at omega, its centre moving on the circle about A.
+/// Right: just after, turning about B at r omega; the impulse J acts at B.
+void rocking() {
+  const double b = 0.1, h = 0.3, r = stackbook::testing::housnerRatio(b, h);
+  Svg svg(700, 360, "A rocking block lands on its other corner: before and after the impulse at B");
+  const std::string ink = "#2a6f97", impulse = "#c0392b", floorInk = "#555";
+  const auto panel = [&](double left, double tilt, bool after) {
+    const View v = View::equal(left, 40, 330, 280, -0.22, 0.42, -0.06, 0.68);
+    svg.line(v, -0.2, 0.0, 0.4, 0.0, stroke(floorInk, 2.0));
+    for (double x = -0.19; x < 0.4; x += 0.04) svg.line(v, x, 0.0, x - 0.03, -0.03, stroke(floorInk, 1.0));
+    // The block on its pivot: before, on A at the origin with B above the floor; after, on B.
+    const double c = std::cos(tilt), s = std::sin(tilt);
+    const double px = after ? 2.0 * b : 0.0;  // the pivot
+    const double sx = after ? -2.0 * b : 0.0; // the pivot's offset from A in the block's frame
+    const auto at = [&](double x, double y) {  // block frame, A at (0, 0), to world
+      const double X = x + sx, Y = y;
+      return std::make_pair(px + c * X - s * Y, s * X + c * Y);
+    };
+    Points block = {at(0, 0), at(2 * b, 0), at(2 * b, 2 * h), at(0, 2 * h)};
+    svg.polygon(v, block, filled("#dbe9f3", ink, 1.8));
+    const auto [cx, cy] = at(b, h);
+    svg.circle(v, cx, cy, 3.5, filled(ink, ink));
+    svg.text(v, cx, cy, "C", "start", 7, -6, ink);
+    const auto [ax, ay] = at(0, 0);
+    const auto [bx, by] = at(2 * b, 0);
+    svg.text(v, ax, ay, "A", "end", -6, 16);
+    svg.text(v, bx, by, "B", "start", 6, 16);
+    // Turning about the pivot: an arc and the centre's velocity, perpendicular to C - pivot.
+    const double pivotX = after ? bx : ax, pivotY = after ? by : ay;
+    const double dx = cx - pivotX, dy = cy - pivotY;
+    const double speed = (after ? r : 1.0) * 0.18;
+    svg.arrow(v, cx, cy, cx + speed * dy / std::hypot(dx, dy), cy - speed * dx / std::hypot(dx, dy), ink, 2.2);
+    svg.text(v, cx + speed * dy / std::hypot(dx, dy), cy - speed * dx / std::hypot(dx, dy),
+             after ? "r ω" : "ω", "start", 6, 4, ink, 14, true);
+    svg.circle(v, pivotX, pivotY, 5, filled("white", ink, 2.0));
+    if (after) svg.arrow(v, bx + 0.035, by - 0.05, bx + 0.005, by - 0.004, impulse, 2.6);
+    if (after) svg.text(v, bx + 0.035, by - 0.05, "J", "start", 4, 6, impulse, 14, true);
+    svg.text(v, 0.1, 0.66, after ? "just after: about B" : "just before: about A", "middle", 0, 0, "#222", 14);
+  };
+  panel(10, 0.06, false);
+  panel(360, -0.06, true);
+  svg.save("ch08_rocking.svg");
+  std::cout << "ch08_rocking.svg: b/h = " << b / h << ", Housner's ratio r = " << r << "\n";
+}
+
 }  // namespace
 
 int main() {
   hop();
   slide();
+  rocking();
 }

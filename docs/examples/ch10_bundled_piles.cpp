@@ -6,8 +6,9 @@
 // milliseconds and impulses per step, the deepest overlap at the recorded frames, and the
 // change of kinetic plus potential energy over the run. It checks the two claims the chapter
 // makes of the table and exits with an error if either no longer holds: the short loops take
-// fewer impulses than GBF's on every scene and in both orders, and the funnel in list order is
-// the row where they deepen the overlap most, relative to GBF's loops.
+// fewer impulses than GBF's on every scene and in both orders. It also names the row where they
+// deepen the overlap most, relative to GBF's loops (a chaotic pile: which row that is can change
+// with any change to the step, so the page quotes the program).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -75,7 +76,7 @@ int main() {
       const double ratio = loops.overlap / gbf.overlap;
       if (ratio > deepestRatio) {
         deepestRatio = ratio;
-        deepest = std::string(name) + " " + orderWord;
+        deepest = std::string(name) + ".json` in " + orderWord;
       }
     }
   }
@@ -85,10 +86,8 @@ int main() {
     std::fprintf(stderr, "ch10_bundled_piles: the short loops no longer take fewer impulses everywhere\n");
     return 1;
   }
-  if (deepest != "bones_funnel_2d list") {
-    std::fprintf(stderr, "ch10_bundled_piles: the largest overlap ratio is now %s's (%.3g), not the funnel's in list order\n",
-                 deepest.c_str(), deepestRatio);
-    return 1;
-  }
+  std::printf("\nThe short loops deepen the overlap most, relative to GBF's loops, on `%s` order: %.2f times GBF's "
+              "deepest overlap.\n",
+              deepest.c_str(), deepestRatio);
   return 0;
 }

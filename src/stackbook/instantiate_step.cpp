@@ -17,7 +17,7 @@ namespace stackbook {
                               const StageSpec&, int, double, const StepSettings&,              \
                               StageCounters&, PairCandidateLists<D>*);                         \
   template std::vector<CollisionBody<D>> stageViews<D>(const World<D>&, Lookahead, double,     \
-                                                       RotationUpdate, const ParallelSettings&); \
+                                                       RotationUpdate, const ParallelSettings&, LeverArms, bool); \
   template int sweepPairs<D>(World<D>&, std::vector<CollisionBody<D>>&,                        \
                              const std::vector<BodyPair>&, const StageSpec&, int, double,      \
                              const StepSettings&, StageCounters&,                              \

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "../support/dimensions.hpp"
+#include "ch08/rocking_block.hpp"
 #include "ch09/stack_scenes.hpp"
 #include "stackbook/scene/scene.hpp"
 #include "stackbook/scene/simulation.hpp"
@@ -170,6 +171,33 @@ TEST_CASE("The plank on two stacks and the bundled heavy box on a light one stan
   CHECK(largestMove<2>(start, world) < 1e-3);
   CHECK(heavyGain < 1e-9);
 }
+
+// [default_rocking_test]
+TEST_CASE_TEMPLATE("Under the default a rocking block keeps Housner's ratio within 1 % at every dt from 1e-3 to "
+                   "2.5e-4 for b/h = 1/2 and 1/3 and 1/5 released at 5 and 10 degrees and no landing step raises "
+                   "its energy",
+                   Dim, testing::In2D, testing::In3D) {
+  constexpr int D = Dim::value;
+  for (const double aspect : {0.5, 1.0 / 3.0, 0.2}) {
+    for (const double theta0 : {5.0, 10.0}) {
+      for (const double dt : {1e-3, 7e-4, 5e-4, 4e-4, 2.5e-4}) {
+        testing::RockingBlock<D> scene = testing::makeRockingBlock<D>(0.1, 0.1 / aspect, theta0 * M_PI / 180.0);
+        ContactRecorder recorder;
+        StepSettings settings = testing::defaultStepAt(dt);
+        settings.contactRecorder = &recorder;
+        const testing::Landing landing = testing::firstLanding<D>(
+            scene, dt, recorder, [&](World<D>& w) { stackingStep<D>(w, settings); });
+        CAPTURE(aspect);
+        CAPTURE(theta0);
+        CAPTURE(dt);
+        REQUIRE(landing.found);
+        CHECK(landing.ratio() == doctest::Approx(testing::housnerRatio(0.1, 0.1 / aspect)).epsilon(0.01));
+        CHECK(landing.largestRise <= 1e-9 * landing.before);
+      }
+    }
+  }
+}
+// [default_rocking_test]
 
 }  // TEST_SUITE
 

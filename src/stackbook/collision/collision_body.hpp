@@ -51,6 +51,18 @@ class RotationCache<2> {
 };
 // [rotation_cache]
 
+// [lever_arms]
+/// Where the approach test and the impulse measure a sample's lever arms (chapter 12,
+/// "Where the lever arms are measured", Eq. (8.22)).
+enum class LeverArms {
+  /// At the pose the sample was found at, the tested pose (Eq. (7.4)): r = p - x'.
+  AtTestedPose,
+  /// At the body's pose at the start of the step: the sample's body point carried back,
+  /// r = R R'^T (p - x'), and the normal likewise (PhysBAM's choice; the default).
+  AtStartPose,
+};
+// [lever_arms]
+
 // [collision_body]
 /// A read-only view of one body for collision detection (\ref ch07).
 ///
@@ -65,14 +77,61 @@ struct CollisionBody {
   bool isStatic = false;               ///< two static bodies are never paired
   /// R of `pose`, kept by collisionBodyAt() and setPose(); right for any pose (see RotationCache).
   RotationCache<D> rotation;
+  /// Where leverArm() and carriedDirection() measure (chapter 8, Eq. (8.22)).
+  LeverArms arms = LeverArms::AtTestedPose;
+  /// How far the step's loads move the tested pose: x' - (x + dt v) = dt^2 a (Eq. (8.1));
+  /// zero unless the collision stage asks for held samples (chapter 12, Eq. (12.6)).
+  Vec<D> loadDrop = Vec<D>::Zero();
 
-  /// Moves the view to `p` and keeps its rotation matrix.
+  /// R R'^T, the rotation that carries a direction of the body at the tested pose back to the
+  /// body's own pose (Eq. (8.22)); kept by measureArms() and setPose() under LeverArms::AtStartPose.
+  Mat<D> carry = Mat<D>::Identity();
+
+  /// Moves the view to `p` and keeps its rotation matrix (and, measuring at the start pose, its
+  /// carry).
   void setPose(const Pose<D>& p) {
     pose = p;
     rotation.keep(p.orientation);
+    if (arms == LeverArms::AtStartPose) keepCarry();
   }
+  /// Measure lever arms as `a` says from now on (Eq. (8.22)).
+  void measureArms(LeverArms a) {
+    arms = a;
+    if (arms == LeverArms::AtStartPose) keepCarry();
+  }
+  void keepCarry() { carry = rotationMatrix<D>(body->orientation) * poseRotation().transpose(); }
   /// rotationMatrix(pose.orientation), bit for bit, without rebuilding it when the view kept it.
   Mat<D> poseRotation() const { return rotation.matrixOf(pose.orientation); }
+
+  // [lever_arm]
+  /// The lever arm of the body point found at world point `p` at the tested pose: p - x'
+  /// (Eq. (7.4)), or under LeverArms::AtStartPose that point carried back to the body's
+  /// pose, R R'^T (p - x') (Eq. (8.22)).
+  /// A point that is no fixed point of the body (`bodyPoint` false: an exact deepest point,
+  /// chapter 11) keeps p - x' either way.
+  Vec<D> leverArm(const Vec<D>& p, bool bodyPoint = true) const {
+    const Vec<D> r = p - pose.position;
+    if (arms == LeverArms::AtTestedPose || !bodyPoint) return r;
+    return carry * r;  // Eq. (8.22): R R'^T (p - x')
+  }
+  /// A direction `n` of the body at the tested pose (a normal), as leverArm() carries it.
+  Vec<D> carriedDirection(const Vec<D>& n, bool bodyPoint = true) const {
+    if (arms == LeverArms::AtTestedPose || !bodyPoint) return n;
+    return carry * n;  // Eq. (8.22)
+  }
+  // [lever_arm]
+
+  // [held_sample]
+  /// True when the body point at world point `p` of this view, found inside `other` at
+  /// the tested poses, is outside it once the two bodies' load drops are taken back
+  /// (Eq. (12.6)): it interferes only because the step's loads move the two bodies apart
+  /// by dt^2 (a - a_other). `inOther` is p in `other`'s frame at its tested pose.
+  bool interferesByLoadsAlone(const CollisionBody<D>& other, const Mat<D>& Rother, const Vec<D>& inOther) const {
+    const Vec<D> drop = loadDrop - other.loadDrop;
+    if (drop.isZero(0.0)) return false;
+    return other.shape->signedDistance(Vec<D>(inOther - Rother.transpose() * drop)) >= 0.0;
+  }
+  // [held_sample]
 };
 // [collision_body]
 
@@ -82,7 +141,8 @@ struct CollisionBody {
 template <int D>
 CollisionBody<D> collisionBodyAt(const RigidBody<D>& body, const Shape<D>& shape,
                                  const Pose<D>& pose) {
-  CollisionBody<D> view{&body, &shape, pose, body.isStatic(), {}};
+  CollisionBody<D> view{&body, &shape, pose, body.isStatic(), {}, LeverArms::AtTestedPose, Vec<D>::Zero(),
+                        Mat<D>::Identity()};
   view.rotation.keep(pose.orientation);
   return view;
 }

@@ -23,6 +23,7 @@ struct DetectionCounters {
   std::int64_t interferenceSamples = 0; ///< samples found inside the other body (phi < 0)
   std::int64_t candidateListsMade = 0;  ///< narrow phase: candidate lists made or remade (chapter 7)
   std::int64_t listedQueries = 0;       ///< narrow phase: directions answered from a candidate list
+  std::int64_t heldSamples = 0;         ///< collision stage: approaching samples passed over as held (Eq. (12.6))
 
   /// Set every count back to zero.
   void reset() { *this = DetectionCounters{}; }
@@ -38,6 +39,7 @@ struct DetectionCounters {
     interferenceSamples += o.interferenceSamples;
     candidateListsMade += o.candidateListsMade;
     listedQueries += o.listedQueries;
+    heldSamples += o.heldSamples;
     return *this;
   }
 

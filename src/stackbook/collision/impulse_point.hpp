@@ -4,6 +4,7 @@
 /// Eqs. (8.10)-(8.12)): GBF's deepest approaching sample, or the depth-weighted centre of
 /// the approaching samples that share its normal.
 
+#include <cmath>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -36,16 +37,64 @@ struct ImpulsePointSettings {
   /// owner) has n_i . n >= normalCosine (in (0, 1]; 0.99 is 8.1 degrees). Faces of a
   /// nonconvex body that meet at a sharper angle get their own impulses.
   double normalCosine = 0.99;
+  /// Where the approach test and the impulse measure lever arms and the normal (chapter 12,
+  /// "Where the lever arms are measured", Eq. (8.22)): at the pose the step started from
+  /// (the default, PhysBAM's), or at the tested pose where the sample was found.
+  LeverArms arms = LeverArms::AtStartPose;
+  /// The collision stage passes over held samples (chapter 12, "Landing on a support",
+  /// Eq. (12.6)): an approaching sample that interferes only because of the step's loads,
+  /// while a sample of the pair at least as deep rests on it, is left to the contact stage.
+  /// false: every approaching sample can collide (the rule of Eq. (7.6) alone).
+  bool heldSamples = true;
+  /// The collision stage lands tied samples together (chapter 12, "Landing on a support",
+  /// Eq. (12.7)): the approaching samples whose depth is within tieTolerance |phi| of the
+  /// chosen one's, with its normal, share one impulse at their centre. false: ties are
+  /// taken one after the other, in the order round-off gives them (GBF's rule alone).
+  bool tiedLanding = true;
+  /// The relative depth within which samples tie (>= 0; 1e-6: equal but for round-off).
+  double tieTolerance = 1e-6;
 };
 // [impulse_point_settings]
 
-/// Throws std::invalid_argument unless normalCosine is in (0, 1].
+/// Throws std::invalid_argument unless normalCosine is in (0, 1] and tieTolerance is finite and >= 0.
 inline void validateImpulsePointSettings(const ImpulsePointSettings& s, const char* caller) {
-  if (s.normalCosine > 0.0 && s.normalCosine <= 1.0) return;
   std::ostringstream msg;
-  msg << caller << ": settings.impulsePoint.normalCosine must be in (0, 1], got " << s.normalCosine;
+  if (!(s.normalCosine > 0.0 && s.normalCosine <= 1.0)) {
+    msg << caller << ": settings.impulsePoint.normalCosine must be in (0, 1], got " << s.normalCosine;
+  } else if (!(std::isfinite(s.tieTolerance) && s.tieTolerance >= 0.0)) {
+    msg << caller << ": settings.impulsePoint.tieTolerance must be finite and >= 0, got " << s.tieTolerance;
+  } else {
+    return;
+  }
   throw std::invalid_argument(msg.str());
 }
+
+// [tied_landing_point]
+/// The tied landing of Eq. (12.7) over a list of samples: the centre of the approaching
+/// samples of `samples` whose depth is within ties.depthTolerance |phi| of `chosen`'s and
+/// whose normal, turned to its owner, lies within ties.normalCosine of its normal (chosen
+/// among them). `chosen` itself when it is alone.
+template <int D>
+InterferenceSample<D> tiedLandingPoint(const InterferenceSample<D>& chosen, const std::vector<InterferenceSample<D>>& samples,
+                                       const std::vector<CollisionBody<D>>& bodies, const TiedLanding& ties) {
+  const double reach = ties.depthTolerance * std::abs(chosen.depth);
+  Vec<D> sum = Vec<D>::Zero();
+  int members = 0;
+  for (const InterferenceSample<D>& s : samples) {
+    if (!(s.depth - chosen.depth <= reach)) continue;
+    const double sign = s.owner == chosen.owner ? 1.0 : -1.0;  // turned to the chosen sample's owner
+    if (!(sign * s.normal.dot(chosen.normal) >= ties.normalCosine)) continue;
+    if (!(normalRelativeVelocity<D>(s, bodies) < 0.0)) continue;  // Eq. (7.5)
+    sum += s.point;
+    ++members;
+  }
+  if (members < 2) return chosen;
+  InterferenceSample<D> centre = chosen;
+  centre.point = sum / static_cast<double>(members);  // Eq. (12.7)
+  centre.sampleIndex = -1;
+  return centre;
+}
+// [tied_landing_point]
 
 // [impulse_point]
 /// The sample one impulse of the pair acts at, or empty when no sample approaches.
@@ -61,8 +110,9 @@ inline void validateImpulsePointSettings(const ImpulsePointSettings& s, const ch
 template <int D>
 std::optional<InterferenceSample<D>> impulsePoint(const std::vector<InterferenceSample<D>>& samples,
                                                   const std::vector<CollisionBody<D>>& bodies,
-                                                  const ImpulsePointSettings& settings) {
-  const std::optional<InterferenceSample<D>> deepest = deepestApproachingSample<D>(samples, bodies);
+                                                  const ImpulsePointSettings& settings,
+                                                  DetectionCounters* counters = nullptr) {
+  const std::optional<InterferenceSample<D>> deepest = deepestApproachingSample<D>(samples, bodies, counters);
   if (!deepest || settings.rule != ImpulsePointRule::DepthWeightedCentre) return deepest;
   Vec<D> weighted = Vec<D>::Zero();
   double total = 0.0;

@@ -45,7 +45,7 @@ template struct PairInterference<3>;
   template double normalRelativeVelocity<D>(const InterferenceSample<D>&,                       \
                                             const std::vector<CollisionBody<D>>&);              \
   template std::optional<InterferenceSample<D>> deepestApproachingSample<D>(                    \
-      const std::vector<InterferenceSample<D>>&, const std::vector<CollisionBody<D>>&);         \
+      const std::vector<InterferenceSample<D>>&, const std::vector<CollisionBody<D>>&, DetectionCounters*); \
   template std::vector<PairInterference<D>> detectInterference<D>(                              \
       const std::vector<CollisionBody<D>>&, const DetectionSettings&, DetectionCounters*);
 

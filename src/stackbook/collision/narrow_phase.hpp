@@ -5,6 +5,7 @@
 /// (\ref ch07, Eqs. (7.1)-(7.7)).
 
 #include <algorithm>
+#include <limits>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -32,8 +33,18 @@ struct InterferenceSample {
   Vec<D> normal = Vec<D>::Zero();  ///< unit outward normal of the penetrated body there, world frame
   int owner = -1;                  ///< index of the body the sample belongs to
   int other = -1;                  ///< index of the penetrated body
-  int sampleIndex = -1;            ///< index in the owner's surfaceSamples()
+  int sampleIndex = -1;            ///< index in the owner's surfaceSamples(); kDeepestPointSample for an exact deepest point
+  /// A point of the owner's body, carried with it (a surface sample, or a centre of samples), as
+  /// opposed to an exact deepest point (chapter 11), which is where the shape's surface is deepest
+  /// at the tested pose and no fixed point of the body (chapter 8, Eq. (8.22)).
+  bool isBodyPoint() const;
 };
+/// The sampleIndex of an exact deepest point (chapter 11).
+inline constexpr int kDeepestPointSample = -2;
+template <int D>
+bool InterferenceSample<D>::isBodyPoint() const {
+  return sampleIndex != kDeepestPointSample;
+}
 // [interference_sample]
 
 namespace detail {
@@ -380,7 +391,7 @@ bool appendDeepestPoint(const CollisionBody<D>& owner, int ownerIndex,
     sample.normal = penetrated.pose.directionToWorld(shapeB.normal(xB));  // Eq. (7.3)
     sample.owner = ownerIndex;
     sample.other = penetratedIndex;
-    sample.sampleIndex = -2;
+    sample.sampleIndex = kDeepestPointSample;
     out.push_back(sample);
   }
   return owner.shape->deepestPointIsWholeContact();
@@ -480,7 +491,8 @@ std::vector<InterferenceSample<D>> pairInterference(const std::vector<CollisionB
 // [sample_relative_velocity]
 /// Relative velocity at an interference sample, u_rel = u_owner - u_other, each
 /// u = v + omega x r with r measured from that body's centre of mass at its tested pose
-/// (Eq. (7.4)); v and omega are the bodies' current velocities. \ref ch07
+/// (Eq. (7.4)), or at its pose at the start of the step when the views say so
+/// (CollisionBody::arms, Eq. (8.22)); v and omega are the bodies' current velocities. \ref ch07
 template <int D>
 Vec<D> sampleRelativeVelocity(const InterferenceSample<D>& s,
                               const std::vector<CollisionBody<D>>& bodies) {
@@ -488,17 +500,19 @@ Vec<D> sampleRelativeVelocity(const InterferenceSample<D>& s,
   const CollisionBody<D>& other = bodies.at(static_cast<std::size_t>(s.other));
   checkCollisionBody<D>(owner, s.owner, "sampleRelativeVelocity");
   checkCollisionBody<D>(other, s.other, "sampleRelativeVelocity");
-  const Vec<D> rOwner = s.point - owner.pose.position;
-  const Vec<D> rOther = s.point - other.pose.position;
-  return owner.body->pointVelocity(rOwner) - other.body->pointVelocity(rOther);  // Eq. (7.4)
+  const bool carried = s.isBodyPoint();
+  return owner.body->pointVelocity(owner.leverArm(s.point, carried)) -
+         other.body->pointVelocity(other.leverArm(s.point, carried));  // Eq. (7.4)
 }
 
 /// The normal part u_rel . N of the relative velocity: negative when the sample moves
-/// deeper into the other body (approaching, Eq. (7.5)). \ref ch07
+/// deeper into the other body (approaching, Eq. (7.5)). N is the other body's normal, carried
+/// like the lever arms (CollisionBody::carriedDirection()). \ref ch07
 template <int D>
 double normalRelativeVelocity(const InterferenceSample<D>& s,
                               const std::vector<CollisionBody<D>>& bodies) {
-  return sampleRelativeVelocity<D>(s, bodies).dot(s.normal);
+  const CollisionBody<D>& other = bodies.at(static_cast<std::size_t>(s.other));
+  return sampleRelativeVelocity<D>(s, bodies).dot(other.carriedDirection(s.normal, s.isBodyPoint()));
 }
 // [sample_relative_velocity]
 
@@ -506,13 +520,38 @@ double normalRelativeVelocity(const InterferenceSample<D>& s,
 /// The sample with the smallest phi among those that are approaching (u_rel . N < 0,
 /// Eq. (7.5)); samples that separate or rest are ignored (Eq. (7.6)). Ties keep the first
 /// in `samples`. Empty when no sample approaches. \ref ch07
+///
+/// Held samples (chapter 12, Eq. (12.6)): when the views carry load drops (the collision
+/// stage), an approaching sample that interferes only because of the loads
+/// (CollisionBody::interferesByLoadsAlone()) while a sample of the pair at least as deep
+/// rests (does not approach) is held by that support and is not chosen.
 template <int D>
 std::optional<InterferenceSample<D>> deepestApproachingSample(
-    const std::vector<InterferenceSample<D>>& samples, const std::vector<CollisionBody<D>>& bodies) {
+    const std::vector<InterferenceSample<D>>& samples, const std::vector<CollisionBody<D>>& bodies,
+    DetectionCounters* counters = nullptr) {
+  // The first resting sample in (depth, position) order: a sample after it in that order has a
+  // resting one at least as deep (the order deepestApproachingInPair() visits them in).
+  std::pair<double, std::size_t> firstResting{std::numeric_limits<double>::infinity(), samples.size()};
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    if (!(normalRelativeVelocity<D>(samples[i], bodies) < 0.0)) {
+      firstResting = std::min(firstResting, std::pair<double, std::size_t>{samples[i].depth, i});
+    }
+  }
   std::optional<InterferenceSample<D>> best;
-  for (const InterferenceSample<D>& s : samples) {
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const InterferenceSample<D>& s = samples[i];
     if (!(normalRelativeVelocity<D>(s, bodies) < 0.0)) continue;  // Eq. (7.5)
-    if (!best || s.depth < best->depth) best = s;                 // Eq. (7.6)
+    if (best && !(s.depth < best->depth)) continue;               // Eq. (7.6)
+    if (firstResting < std::pair<double, std::size_t>{s.depth, i}) {  // Eq. (12.6)
+      const CollisionBody<D>& owner = bodies[static_cast<std::size_t>(s.owner)];
+      const CollisionBody<D>& other = bodies[static_cast<std::size_t>(s.other)];
+      const Mat<D> Rother = other.poseRotation();
+      if (owner.interferesByLoadsAlone(other, Rother, Vec<D>(Rother.transpose() * (s.point - other.pose.position)))) {
+        if (counters != nullptr) ++counters->heldSamples;
+        continue;
+      }
+    }
+    best = s;
   }
   return best;
 }
@@ -521,6 +560,16 @@ std::optional<InterferenceSample<D>> deepestApproachingSample(
 // [deepest_approaching_lazy]
 /// A sample found inside the other body, before its world point and normal are computed:
 /// what deepestApproachingInPair() sorts by depth.
+// [tied_landing]
+/// Samples that land together (chapter 12, Eq. (12.7)): approaching samples whose depth is
+/// within depthTolerance |phi| of the chosen sample's, with a normal within normalCosine of
+/// its normal, share its impulse at their centre.
+struct TiedLanding {
+  double depthTolerance = 1e-6;
+  double normalCosine = 0.99;
+};
+// [tied_landing]
+
 template <int D>
 struct InterferenceCandidate {
   Vec<D> inPenetrated = Vec<D>::Zero();  ///< the sample in the penetrated body's frame (x_B)
@@ -670,11 +719,16 @@ void appendCandidatesInside(const CollisionBody<D>& owner, const Mat<D>& RA, con
 /// The overload on the pair's two views: `a` is body pair.first's, `b` body pair.second's
 /// (the indices name the bodies in the sample and in errors only), so that a caller may ask
 /// with a view that is not in a world's list, such as chapter 9's advanced body.
+///
+/// With `ties` (chapter 12, Eq. (12.7); the collision stage), the approaching samples whose
+/// depth ties with the chosen one's (within ties->depthTolerance |phi|) and whose normal,
+/// turned to its owner, lies within ties->normalCosine of its normal land with it: the
+/// sample returned is at their centre (sampleIndex -1), with the chosen one's normal.
 template <int D>
 std::optional<InterferenceSample<D>> deepestApproachingInPair(
     const CollisionBody<D>& a, const CollisionBody<D>& b, const BodyPair& pair, const NarrowPhaseSettings& settings,
     DetectionCounters* counters, std::vector<InterferenceCandidate<D>>& scratch,
-    PairCandidateLists<D>* lists = nullptr) {
+    PairCandidateLists<D>* lists = nullptr, const TiedLanding* ties = nullptr) {
   // pairInterference()'s checks, once for the pair.
   if (a.shape == nullptr || b.shape == nullptr || a.body == nullptr || b.body == nullptr) {
     std::ostringstream msg;
@@ -704,8 +758,12 @@ std::optional<InterferenceSample<D>> deepestApproachingInPair(
   detail::appendCandidatesInside<D>(b, Rb, a, Ra, pair.first, false, scratch, settings, counters,
                                     lists != nullptr ? &lists->secondInFirst : nullptr);
   if (counters != nullptr) ++counters->pairQueries;
-  // The approach test of candidate `index` (Eqs. (7.3)-(7.5)): the sample when it approaches.
-  const auto approaching = [&](std::size_t index) -> std::optional<InterferenceSample<D>> {
+  // The approach test of candidate `index` (Eqs. (7.3)-(7.5)): the sample when it approaches
+  // and is not held (Eq. (12.6)); candidates come in depth order, so a resting one seen
+  // before is at least as deep.
+  bool restingSeen = false;
+  // Candidate `index` as a sample (Eq. (7.3)).
+  const auto sampleOf = [&](std::size_t index) {
     const InterferenceCandidate<D>& c = scratch[index];
     const CollisionBody<D>& owner = c.firstOwns ? a : b;
     const CollisionBody<D>& other = c.firstOwns ? b : a;
@@ -719,21 +777,74 @@ std::optional<InterferenceSample<D>> deepestApproachingInPair(
     s.owner = c.firstOwns ? pair.first : pair.second;
     s.other = c.firstOwns ? pair.second : pair.first;
     s.sampleIndex = c.sampleIndex;
-    const Vec<D> rOwner = s.point - owner.pose.position;
-    const Vec<D> rOther = s.point - other.pose.position;
-    const Vec<D> u = owner.body->pointVelocity(rOwner) - other.body->pointVelocity(rOther);  // Eq. (7.4)
-    if (u.dot(s.normal) < 0.0) return s;                                                      // Eq. (7.5)
-    return std::nullopt;
+    return s;
+  };
+  // Whether sample s approaches (Eqs. (7.4), (7.5)).
+  const auto approaches = [&](const InterferenceSample<D>& s) {
+    const CollisionBody<D>& owner = s.owner == pair.first ? a : b;
+    const CollisionBody<D>& other = s.owner == pair.first ? b : a;
+    const Vec<D> u = owner.body->pointVelocity(owner.leverArm(s.point)) -
+                     other.body->pointVelocity(other.leverArm(s.point));  // Eq. (7.4)
+    return u.dot(other.carriedDirection(s.normal)) < 0.0;               // Eq. (7.5)
+  };
+  const auto approaching = [&](std::size_t index) -> std::optional<InterferenceSample<D>> {
+    const InterferenceCandidate<D>& c = scratch[index];
+    const CollisionBody<D>& owner = c.firstOwns ? a : b;
+    const CollisionBody<D>& other = c.firstOwns ? b : a;
+    const Mat<D>& Rother = c.firstOwns ? Rb : Ra;
+    const InterferenceSample<D> s = sampleOf(index);
+    if (!approaches(s)) {
+      restingSeen = true;
+      return std::nullopt;
+    }
+    // Held (Eq. (12.6)): a deeper sample rests and this one interferes by the loads alone (its
+    // point in the other's frame computed as deepestApproachingSample() computes it).
+    if (restingSeen &&
+        owner.interferesByLoadsAlone(other, Rother, Vec<D>(Rother.transpose() * (s.point - other.pose.position)))) {
+      if (counters != nullptr) ++counters->heldSamples;
+      return std::nullopt;
+    }
+    return s;
   };
   const std::size_t count = scratch.size();
   if (count == 0) return std::nullopt;
+  // [tied_landing_lazy]
+  // The chosen candidate `index`, sample s, with the candidates that tie with it (Eq. (12.7)).
+  // The members are summed in the candidates' order, which is pairInterference()'s sample
+  // order, as tiedLandingPoint() sums them: the same centre, bit for bit, from either.
+  const auto landing = [&](std::size_t index, InterferenceSample<D> s) {
+    if (ties == nullptr || count < 2) return s;
+    const double reach = ties->depthTolerance * std::abs(s.depth);
+    Vec<D> sum = Vec<D>::Zero();
+    int members = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+      if (i == index) {
+        sum += s.point;
+        ++members;
+        continue;
+      }
+      if (!(scratch[i].depth - s.depth <= reach)) continue;
+      const InterferenceSample<D> t = sampleOf(i);
+      const double sign = t.owner == s.owner ? 1.0 : -1.0;  // turned to s's owner
+      if (!(sign * t.normal.dot(s.normal) >= ties->normalCosine)) continue;
+      if (!approaches(t)) continue;  // Eq. (7.5)
+      sum += t.point;
+      ++members;
+    }
+    if (members > 1) {
+      s.point = sum / static_cast<double>(members);  // Eq. (12.7)
+      s.sampleIndex = -1;
+    }
+    return s;
+  };
+  // [tied_landing_lazy]
   // The first key, the smallest (depth, position), by one scan: in the impulse loops the
   // deepest candidate usually approaches, and then nothing needs ordering.
   std::size_t first = 0;
   for (std::size_t i = 1; i < count; ++i) {
     if (scratch[i].depth < scratch[first].depth) first = i;  // ties keep the earlier position
   }
-  if (std::optional<InterferenceSample<D>> s = approaching(first)) return s;
+  if (std::optional<InterferenceSample<D>> s = approaching(first)) return landing(first, *s);
   // The candidates by (depth, order): a stable sort by depth, since a candidate's position
   // in scratch is its order. Only (depth, position) keys are ordered, never the candidates
   // themselves; no depth is NaN (phi < 0) and positions are unique, so the keys are totally
@@ -777,7 +888,7 @@ std::optional<InterferenceSample<D>> deepestApproachingInPair(
       index = static_cast<std::size_t>(fewPosition[next]);
     }
     if (next == 0) continue;  // index == first: keys are unique, so the smallest is the scan's
-    if (std::optional<InterferenceSample<D>> s = approaching(index)) return s;
+    if (std::optional<InterferenceSample<D>> s = approaching(index)) return landing(index, *s);
   }
   return std::nullopt;
 }
@@ -788,7 +899,7 @@ template <int D>
 std::optional<InterferenceSample<D>> deepestApproachingInPair(
     const std::vector<CollisionBody<D>>& bodies, const BodyPair& pair, const NarrowPhaseSettings& settings,
     DetectionCounters* counters, std::vector<InterferenceCandidate<D>>& scratch,
-    PairCandidateLists<D>* lists = nullptr) {
+    PairCandidateLists<D>* lists = nullptr, const TiedLanding* ties = nullptr) {
   const int n = static_cast<int>(bodies.size());
   if (pair.first < 0 || pair.first >= n || pair.second < 0 || pair.second >= n || pair.first == pair.second) {
     std::ostringstream msg;
@@ -798,7 +909,7 @@ std::optional<InterferenceSample<D>> deepestApproachingInPair(
   }
   return deepestApproachingInPair<D>(bodies[static_cast<std::size_t>(pair.first)],
                                      bodies[static_cast<std::size_t>(pair.second)], pair, settings, counters,
-                                     scratch, lists);
+                                     scratch, lists, ties);
 }
 // [deepest_approaching_lazy]
 
@@ -908,7 +1019,7 @@ std::vector<PairInterference<D>> detectInterference(const std::vector<CollisionB
       const std::vector<CollisionBody<D>>&, const BodyPair&, const NarrowPhaseSettings&,        \
       DetectionCounters*);                                                                      \
   extern template std::optional<InterferenceSample<D>> deepestApproachingSample<D>(             \
-      const std::vector<InterferenceSample<D>>&, const std::vector<CollisionBody<D>>&);         \
+      const std::vector<InterferenceSample<D>>&, const std::vector<CollisionBody<D>>&, DetectionCounters*); \
   extern template std::vector<PairInterference<D>> detectInterference<D>(                       \
       const std::vector<CollisionBody<D>>&, const DetectionSettings&, DetectionCounters*);
 STACKBOOK_EXTERN_NARROW_PHASE(2)

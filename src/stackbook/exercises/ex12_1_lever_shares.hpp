@@ -10,7 +10,7 @@ namespace stackbook {
 /// supporters it enters at `entries` (one coordinate each, at least one). The shares are >= 0,
 /// add up to 1 and put the load's centre where it is: sum s_i x_i = centre, with the load
 /// carried by the two entries nearest on either side of the centre (the lever rule,
-/// Eq. (12.6)). A centre outside all entries goes wholly to the nearest one; entries at one
+/// Eq. (12.8)). A centre outside all entries goes wholly to the nearest one; entries at one
 /// place share equally. Throws std::invalid_argument for no entries or a non-finite value.
 std::vector<double> leverShares(double centre, const std::vector<double>& entries);
 

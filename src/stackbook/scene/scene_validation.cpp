@@ -124,7 +124,8 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
   r.requireObject(solver, p,
                   {"collisionIterations", "collisionPairIterations", "contactIterations",
                    "contactPairIterations", "contactRestitution", "shock", "order", "impulsePoint",
-                   "impulsePointNormalCosine", "frictionCone", "rotation", "surfaceQuery", "threads", "sleep",
+                   "impulsePointNormalCosine", "leverArms", "heldSamples", "tiedLanding", "tieTolerance",
+                   "frictionCone", "rotation", "surfaceQuery", "threads", "sleep",
                    "pairImpulseTolerance", "stageApproachTolerance", "candidateReach", "pairOrder", "preset"},
                   "the solver settings");
   // A preset (chapter 9) sets several fields at once; it is applied first, so that the
@@ -190,6 +191,16 @@ void readSolver(const Reader& r, const json& solver, StepSettings& s) {
     } else {
       r.fail(ptr, "must be \"deepest\", \"centre\" or \"patch\", got \"" + word + "\"");
     }
+  }
+  // Where impulses measure their lever arms, and the landing rules (chapter 8, "Where the lever
+  // arms are measured"; chapter 12, "Landing on a support").
+  if (member(solver, "leverArms")) {
+    s.impulsePoint.arms = choose("leverArms", "startPose", LeverArms::AtStartPose, "testedPose", LeverArms::AtTestedPose);
+  }
+  if (const json* v = member(solver, "heldSamples")) s.impulsePoint.heldSamples = r.boolean(*v, p + "/heldSamples");
+  if (const json* v = member(solver, "tiedLanding")) s.impulsePoint.tiedLanding = r.boolean(*v, p + "/tiedLanding");
+  if (const json* v = member(solver, "tieTolerance")) {
+    s.impulsePoint.tieTolerance = r.inRange(*v, p + "/tieTolerance", 0.0, 1.0);
   }
   if (member(solver, "rotation")) {
     s.rotation = choose("rotation", "exponentialMap", RotationUpdate::ExponentialMap, "implicitMidpoint",

@@ -36,7 +36,7 @@ const std::vector<std::string> kQuantities = {"position",       "velocity",    "
                                               "flipPeriod",     "drift",       "sag",
                                               "windowed",       "bounceApex",  "mirror",
                                               "standing",       "distance",    "speed",
-                                              "precession"};
+                                              "precession",     "rockingRatio"};
 
 /// The peers a spec may name and each one's knobs (whether or not this program has them built).
 const std::vector<std::pair<std::string, std::vector<std::string>>> kPeerKnobs = {
@@ -163,7 +163,7 @@ SweepSpec parseSweepSpec(const json& doc, const std::string& file) {
     const json& e = errors[k];
     if (!e.is_object()) throw SceneError(file, p, "must be an object {\"name\": ..., \"quantity\": ...}");
     rejectUnknown(e, {"name", "quantity", "body", "axis", "radius", "tolerance", "expected", "relative", "within", "unit",
-                     "windows", "window", "refine", "apex"},
+                     "windows", "window", "refine", "apex", "rest"},
                   p, file);
     SweepError out;
     out.quantity = requireString(require(e, "quantity", p, file), p + "/quantity", file);
@@ -173,7 +173,7 @@ SweepSpec parseSweepSpec(const json& doc, const std::string& file) {
                        "unknown quantity \"" + out.quantity + "\"" +
                            (close.empty() ? std::string(" (position, velocity, angularVelocity, energyDrift, "
                                                         "maxPenetration, rollingStart, flipPeriod, drift, sag, windowed, bounceApex, mirror, standing, "
-                                                        "distance, speed, precession)")
+                                                        "distance, speed, precession, rockingRatio)")
                                           : " (did you mean \"" + close + "\"?)"));
     }
     out.name = e.contains("name") ? requireString(e.at("name"), p + "/name", file) : out.quantity;
@@ -231,6 +231,11 @@ SweepSpec parseSweepSpec(const json& doc, const std::string& file) {
     if (e.contains("refine")) {
       out.refine = requireIndex(e.at("refine"), p + "/refine", file);
       if (out.refine < 2) throw SceneError(file, p + "/refine", "must be >= 2 (the fine run's step is dt / refine)");
+    }
+    if (e.contains("rest")) {
+      out.rest = requireNumber(e.at("rest"), p + "/rest", file);
+    } else if (out.quantity == "rockingRatio") {
+      throw SceneError(file, p, "missing field \"rest\" (rockingRatio needs the height, m, of the centre at rest)");
     }
     if (e.contains("apex")) {
       out.apex = requireIndex(e.at("apex"), p + "/apex", file);
@@ -398,7 +403,8 @@ bool sweepHigherIsBetter(const SweepError& e) { return e.quantity == "standing";
 bool sweepNeedsEveryStep(const SweepSpec& spec) {
   for (const SweepError& e : spec.errors) {
     if (e.quantity == "energyDrift" || e.quantity == "rollingStart" || e.quantity == "flipPeriod" ||
-        e.quantity == "maxPenetration" || e.quantity == "bounceApex" || e.quantity == "standing" ||
+        e.quantity == "maxPenetration" || e.quantity == "bounceApex" || e.quantity == "rockingRatio" ||
+        e.quantity == "standing" ||
         e.quantity == "precession") {
       return true;
     }
@@ -418,6 +424,14 @@ double sweepApexHeight(const std::vector<double>& times, const std::vector<doubl
     return a < 0.0 ? heights[f] - b * b / (4.0 * a) : heights[f];
   }
   return std::numeric_limits<double>::infinity();
+}
+
+double sweepRockingRatio(const std::vector<double>& times, const std::vector<double>& heights, int k, double rest) {
+  if (heights.empty()) return std::numeric_limits<double>::infinity();
+  const double apex = sweepApexHeight(times, heights, k);
+  const double start = heights.front() - rest;
+  if (!std::isfinite(apex) || !(start > 0.0)) return std::numeric_limits<double>::infinity();
+  return std::pow(std::max(apex - rest, 0.0) / start, 1.0 / (2.0 * k));  // E_k / E_0 = r^(2k)
 }
 
 double sweepMirrorError(const std::vector<Eigen::Vector3d>& start, const std::vector<Eigen::Vector3d>& end,
@@ -570,12 +584,13 @@ double measureSweepTrajectory(const SweepError& e, const SweepTrajectory& t, con
         }
       }
     }
-  } else if (e.quantity == "bounceApex") {
+  } else if (e.quantity == "bounceApex" || e.quantity == "rockingRatio") {
     bodyCheck();
     std::vector<double> heights;
     heights.reserve(t.frames.size());
     for (const auto& frame : t.frames) heights.push_back(frame[b].position.dot(up));
-    value = sweepApexHeight(t.times, heights, e.apex);
+    value = e.quantity == "bounceApex" ? sweepApexHeight(t.times, heights, e.apex)
+                                       : sweepRockingRatio(t.times, heights, e.apex, e.rest);
   } else if (e.quantity == "mirror") {
     axisCheck(t.dimension);
     std::vector<Eigen::Vector3d> start, end;
@@ -718,16 +733,17 @@ double measureError(const SweepError& e, const RunResult<D>& r, const Scene& sce
         }
       }
     }
-  } else if (e.quantity == "bounceApex" || e.quantity == "mirror") {
+  } else if (e.quantity == "bounceApex" || e.quantity == "rockingRatio" || e.quantity == "mirror") {
     // The same definitions as measureSweepTrajectory()'s, on the recorded poses.
     const World<D>& world = std::get<SceneBodies<D>>(scene.bodies).world;
     const Vec<D> up = sweepUp<D>(world.gravity);
-    if (e.quantity == "bounceApex") {
+    if (e.quantity != "mirror") {
       bodyCheck();
       std::vector<double> heights;
       heights.reserve(rec.frameCount());
       for (std::size_t f = 0; f < rec.frameCount(); ++f) heights.push_back(rec.poses()[f][b].position.dot(up));
-      value = sweepApexHeight(rec.times(), heights, e.apex);
+      value = e.quantity == "bounceApex" ? sweepApexHeight(rec.times(), heights, e.apex)
+                                         : sweepRockingRatio(rec.times(), heights, e.apex, e.rest);
     } else {
       axisCheck(D);
       std::vector<Eigen::Vector3d> start, end;

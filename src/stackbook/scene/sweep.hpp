@@ -58,6 +58,10 @@ struct SweepKnob {
 /// - `distance`: how far body `body`'s centre ended from its start, |x(T) - x(0)| (m; the
 ///   distance a ball rolled down an incline, along whatever direction the slope has);
 /// - `speed`: the magnitude of body `body`'s velocity at the end, |v(T)| (m/s);
+/// - `rockingRatio`: the ratio r a rocking block keeps of its angular velocity at each
+///   landing, from its centre's `apex`-th apex (as `bounceApex`) over its start height, both
+///   above `rest`, the centre's height when the block lies flat: E_k / E_0 = r^(2k), so
+///   r = ((y_k - rest) / (y_0 - rest))^(1 / (2k)) (sweepRockingRatio(); chapter 8, Eq. (8.20));
 /// - `precession`: how far an axisymmetric body's symmetry axis (body axis `axis`, whose two
 ///   other principal moments must agree within `tolerance`, relative) strays from the closed
 ///   form of torque-free precession, which turns it about the fixed angular momentum L at
@@ -84,7 +88,8 @@ struct SweepError {
   int windows = 10;      ///< `windowed`: how many windows
   double window = 0.1;   ///< `windowed`: each window's length (s)
   int refine = 16;       ///< `windowed`: the fine run's step is dt / refine
-  int apex = 1;          ///< `bounceApex`: which apex (1 is the first after the start)
+  int apex = 1;          ///< `bounceApex`, `rockingRatio`: which apex (1 is the first after the start)
+  double rest = 0.0;     ///< `rockingRatio`: the centre's height at rest (m)
 };
 
 /// A peer engine's runs in a sweep: the engine (`box2d` in 2D, `bullet` in 3D) and its own
@@ -255,6 +260,11 @@ std::vector<std::vector<std::string>> readSweepCsv(const std::string& csvPath);
 /// SVG paths. Throws std::runtime_error if gnuplot fails.
 std::vector<std::string> plotSweep(const SweepSpec& spec, const std::string& csvPath,
                                    const std::string& prefix);
+
+/// The rocking ratio of a block whose centre started at heights[0] and rests at `rest`: r
+/// from its k-th apex (sweepApexHeight()), ((y_k - rest) / (y_0 - rest))^(1 / (2k)); infinity
+/// when there is no such apex.
+double sweepRockingRatio(const std::vector<double>& times, const std::vector<double>& heights, int k, double rest);
 
 /// A Markdown table of the cheapest stackbook run within each accuracy of each error measure
 /// (SweepError::within: 1 %, 0.1 % and 0.01 % by default), with its setting and its cost,

@@ -380,8 +380,8 @@ void shockPropagationPass(World<D>& world, const ContactGraph& graph, const Cont
   spec.pairImpulseTolerance = shock.pairImpulseTolerance;
   spec.recorder = settings.contactRecorder;  // chapter 10's contacts output; nullptr: off
   spec.stage = ContactStage::Shock;
-  std::vector<CollisionBody<D>> views =
-      stageViews<D>(world, Lookahead::Velocity, settings.dt, settings.rotation, settings.parallel);
+  std::vector<CollisionBody<D>> views = stageViews<D>(world, Lookahead::Velocity, settings.dt, settings.rotation,
+                                                     settings.parallel, settings.impulsePoint.arms);
   // Isolated levels are skipped only when the contact stage swept them (Eq. (9.9)).
   const bool skipIsolated = contactStageRuns(settings, effects);
   std::vector<char> isolated(levels.levelCount(), 0);  // decided before anything is frozen

@@ -116,23 +116,29 @@ template <int D>
                                            StageCounters& counters) {
   thread_local std::vector<Vec<D>> patch;  // reused, as the pair loop's buffers are
   patch.clear();
+  // Points, centres and normal where the views measure lever arms (Eq. (8.22)): at the tested
+  // poses, or each point carried back with its owner to the poses at the start of the step.
+  const bool atStart = views[static_cast<std::size_t>(s.owner)].arms == LeverArms::AtStartPose;
   for (const InterferenceSample<D>& m : samples) {
     const double sign = m.owner == s.owner ? 1.0 : -1.0;  // turned to the chosen sample's owner
-    if (sign * m.normal.dot(s.normal) >= settings.impulsePoint.normalCosine) patch.push_back(m.point);
+    if (!(sign * m.normal.dot(s.normal) >= settings.impulsePoint.normalCosine)) continue;
+    const CollisionBody<D>& carrier = views[static_cast<std::size_t>(m.owner)];
+    patch.push_back(atStart ? Vec<D>(carrier.body->position + carrier.leverArm(m.point)) : m.point);
   }
   RigidBody<D>& owner = world.bodies[static_cast<std::size_t>(s.owner)];
   RigidBody<D>& other = world.bodies[static_cast<std::size_t>(s.other)];
-  const Vec<D>& xo = views[static_cast<std::size_t>(s.owner)].pose.position;
-  const Vec<D>& xb = views[static_cast<std::size_t>(s.other)].pose.position;
-  const std::optional<PatchImpulse<D>> weld = stickingPatchImpulse<D>(owner, xo, other, xb, patch, s.normal, e, mu);
+  const Vec<D> xo = atStart ? owner.position : views[static_cast<std::size_t>(s.owner)].pose.position;
+  const Vec<D> xb = atStart ? other.position : views[static_cast<std::size_t>(s.other)].pose.position;
+  const Vec<D> normal = views[static_cast<std::size_t>(s.other)].carriedDirection(s.normal);
+  const std::optional<PatchImpulse<D>> weld = stickingPatchImpulse<D>(owner, xo, other, xb, patch, normal, e, mu);
   if (!weld) return -1.0;
   owner.applyImpulse(weld->point - xo, weld->J);
   owner.applyAngularImpulse(weld->L);
   other.applyImpulse(weld->point - xb, -weld->J);
   other.applyAngularImpulse(-weld->L);
-  if (spec.ledger != nullptr) spec.ledger->record<D>(pair, s.owner, weld->J, s.normal);
+  if (spec.ledger != nullptr) spec.ledger->record<D>(pair, s.owner, weld->J, normal);
   if (spec.recorder != nullptr) {
-    spec.recorder->record<D>(spec.stage, s.owner, s.other, weld->pressure, s.normal, weld->J);
+    spec.recorder->record<D>(spec.stage, s.owner, s.other, weld->pressure, normal, weld->J);
   }
   counters.countImpulse(ImpulseBranch::Sticking);
   ++counters.patchImpulses;
@@ -165,6 +171,9 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
   thread_local std::vector<InterferenceCandidate<D>> scratch;
   thread_local std::vector<InterferenceSample<D>> samples;  // the centre rule's, reused likewise
   double firstImpulse = 0.0;  // |j| of the visit's first impulse (pairImpulseTolerance)
+  // Tied samples land together (Eq. (12.7)).
+  const bool landing = settings.impulsePoint.tiedLanding;
+  const TiedLanding ties{settings.impulsePoint.tieTolerance, settings.impulsePoint.normalCosine};
   // An exact deepest point (chapter 11) is found by pairInterference() alone.
   const bool exactPair = pairAsksDeepestPoint<D>(settings.detection.narrow, *views[static_cast<std::size_t>(pair.first)].shape,
                                                  *views[static_cast<std::size_t>(pair.second)].shape);
@@ -205,23 +214,37 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
     std::optional<InterferenceSample<D>> point;
     if (exactPair) {
       point = impulsePoint<D>(pairInterference<D>(views, pair, settings.detection.narrow, &counters.detection),
-                              views, settings.impulsePoint);  // Eqs. (7.6), (8.10)
+                              views, settings.impulsePoint, &counters.detection);  // Eqs. (7.6), (8.10)
     } else if (settings.impulsePoint.rule == ImpulsePointRule::Deepest) {
-      point = deepestApproachingInPair<D>(views, pair, settings.detection.narrow, &counters.detection, scratch, lists);
+      point = deepestApproachingInPair<D>(views, pair, settings.detection.narrow, &counters.detection, scratch, lists,
+                                          landing ? &ties : nullptr);  // Eqs. (7.6), (12.7)
     } else {
       pairInterferenceListed<D>(views, pair, settings.detection.narrow, &counters.detection, scratch, samples, lists);
-      point = impulsePoint<D>(samples, views, settings.impulsePoint);  // Eq. (8.10)
+      point = impulsePoint<D>(samples, views, settings.impulsePoint, &counters.detection);  // Eq. (8.10)
+      if (point && landing && settings.impulsePoint.rule == ImpulsePointRule::StickingPatch) {
+        point = tiedLandingPoint<D>(*point, samples, views, ties);  // Eq. (12.7)
+      }
     }
     if (!point) return applied;
+    if (landing && !exactPair && point->sampleIndex < 0 &&
+        settings.impulsePoint.rule != ImpulsePointRule::DepthWeightedCentre) {
+      ++counters.tiedLandings;
+    }
     const InterferenceSample<D>& s = *point;
     RigidBody<D>& owner = world.bodies[static_cast<std::size_t>(s.owner)];
     RigidBody<D>& other = world.bodies[static_cast<std::size_t>(s.other)];
-    const Vec<D> rOwner = s.point - views[static_cast<std::size_t>(s.owner)].pose.position;  // Eq. (8.3)
-    const Vec<D> rOther = s.point - views[static_cast<std::size_t>(s.other)].pose.position;
+    // [pair_lever_arms]
+    // Lever arms and normal where the views measure them: at the tested pose (Eq. (8.3)) or
+    // carried back to the pose at the start of the step (Eq. (8.22)).
+    const bool carried = s.isBodyPoint();  // an exact deepest point keeps Eq. (8.3)
+    const Vec<D> rOwner = views[static_cast<std::size_t>(s.owner)].leverArm(s.point, carried);  // Eq. (8.3)
+    const Vec<D> rOther = views[static_cast<std::size_t>(s.other)].leverArm(s.point, carried);
+    const Vec<D> normal = views[static_cast<std::size_t>(s.other)].carriedDirection(s.normal, carried);
+    // [pair_lever_arms]
     const Mat<D> K = pairCollisionMatrix<D>(owner, rOwner, other, rOther);  // Eq. (1.10)
     const Vec<D> u = relativeVelocity<D>(owner, rOwner, other, rOther);     // Eq. (8.3)
     if (spec.largestApproach != nullptr) {
-      *spec.largestApproach = std::max(*spec.largestApproach, -u.dot(s.normal));
+      *spec.largestApproach = std::max(*spec.largestApproach, -u.dot(normal));
     }
     const PairMaterial material = world.pairMaterial(s.owner, s.other);     // Eq. (8.4)
     const double e = spec.restitution(sweep, material);
@@ -240,7 +263,7 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
     ContactImpulse<D> impulse;  // [pair_deepest_impulse]
     if (spec.friction) {
       ++counters.frictionEvaluations;
-      impulse = frictionalImpulse<D>(K, u, s.normal, e, material.friction, settings.friction);
+      impulse = frictionalImpulse<D>(K, u, normal, e, material.friction, settings.friction);
       // [pair_step_cone]
       // One cone per step (Eq. (8.13)): a sticking trial this impulse alone would reject is
       // taken when the pair's total impulse of the step stays inside the cone. The trial is
@@ -248,9 +271,9 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
       if (spec.ledger != nullptr && impulse.branch == ImpulseBranch::Sliding) {
         ++counters.frictionEvaluations;
         const ContactImpulse<D> trial = frictionalImpulse<D>(
-            K, u, s.normal, e, kUnboundedTrialFriction, settings.friction);
+            K, u, normal, e, kUnboundedTrialFriction, settings.friction);
         if (trial.branch == ImpulseBranch::Sticking &&
-            spec.ledger->admits<D>(pair, s.owner, trial.j, s.normal, material.friction)) {
+            spec.ledger->admits<D>(pair, s.owner, trial.j, normal, material.friction)) {
           impulse = trial;
           impulse.friction = material.friction;
           ++counters.stepConeSticks;
@@ -258,13 +281,13 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
       }
       // [pair_step_cone]
     } else {
-      impulse = frictionlessImpulse<D>(K, u, s.normal, e, settings.friction.pivotTolerance);
+      impulse = frictionlessImpulse<D>(K, u, normal, e, settings.friction.pivotTolerance);
     }
     if (impulse.j.isZero(0.0)) return applied;  // immovable or no response: nothing to iterate
     applyPairImpulse<D>(owner, rOwner, other, rOther, impulse.j);  // +j owner, -j other
-    if (spec.ledger != nullptr) spec.ledger->record<D>(pair, s.owner, impulse.j, s.normal);
+    if (spec.ledger != nullptr) spec.ledger->record<D>(pair, s.owner, impulse.j, normal);
     if (spec.recorder != nullptr) {
-      spec.recorder->record<D>(spec.stage, s.owner, s.other, s.point, s.normal, impulse.j);
+      spec.recorder->record<D>(spec.stage, s.owner, s.other, s.point, normal, impulse.j);
     }
     counters.countImpulse(impulse.branch);
     if (impulse.restitution > 0.0) ++counters.elasticImpulses;
@@ -275,7 +298,7 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
     if (spec.rollingFriction && material.rollingFriction > 0.0 &&
         impulse.branch == ImpulseBranch::Sticking) {
       const RollingFrictionImpulse<D> rolling = rollingFrictionImpulse<D>(
-          owner, rOwner, other, rOther, s.normal, impulse.j.dot(s.normal), material.rollingFriction);
+          owner, rOwner, other, rOther, normal, impulse.j.dot(normal), material.rollingFriction);
       if (!rolling.isZero()) {
         applyRollingFriction<D>(owner, rOwner, other, rOther, rolling);
         ++counters.rollingImpulses;
@@ -291,19 +314,28 @@ int resolvePair(World<D>& world, std::vector<CollisionBody<D>>& views, const Bod
 // [pair_impulse]
 
 // [stage_views]
-/// The collision view of every body at its tested pose under `lookahead`. Each view
-/// depends on its own body only, so blocks of bodies are built on several threads
-/// (settings.bodiesPerTask per block at least) with the same result.
+/// The collision view of every body at its tested pose under `lookahead`, measuring lever
+/// arms as `arms` says (Eq. (8.22)); with `heldSamples` and the collision stage's lookahead,
+/// each view also keeps its load drop dt^2 a (Eq. (12.6)). Each view depends on its own body
+/// only, so blocks of bodies are built on several threads (settings.bodiesPerTask per block
+/// at least) with the same result.
 template <int D>
 std::vector<CollisionBody<D>> stageViews(const World<D>& world, Lookahead lookahead, double dt,
                                          RotationUpdate rotation = RotationUpdate::ExponentialMap,
-                                         const ParallelSettings& parallel = {1, 16, 256, 4}) {
+                                         const ParallelSettings& parallel = {1, 16, 256, 4},
+                                         LeverArms arms = LeverArms::AtTestedPose, bool heldSamples = false) {
   std::vector<CollisionBody<D>> views(world.bodies.size());
+  const bool drops = heldSamples && lookahead == Lookahead::VelocityAndLoads;
   parallelFor(parallel.threads, views.size(), static_cast<std::size_t>(parallel.bodiesPerTask),
               [&](std::size_t begin, std::size_t end) {
                 for (std::size_t k = begin; k < end; ++k) {
+                  const int i = static_cast<int>(k);
                   views[k] = collisionBodyAt<D>(world.bodies[k], *world.shapes[k],
-                                                testedPose<D>(world, static_cast<int>(k), lookahead, dt, rotation));
+                                                testedPose<D>(world, i, lookahead, dt, rotation));
+                  views[k].measureArms(arms);
+                  if (drops) {  // x' - (x + dt v), Eqs. (8.1), (8.2)
+                    views[k].loadDrop = views[k].pose.position - testedPose<D>(world, i, Lookahead::Velocity, dt, rotation).position;
+                  }
                 }
               });
   return views;
@@ -506,7 +538,9 @@ template <int D>
 void runImpulseStage(World<D>& world, const StageSpec& spec, double dt,
                      const StepSettings& settings, StageCounters& counters) {
   const auto start = std::chrono::steady_clock::now();
-  std::vector<CollisionBody<D>> views = stageViews<D>(world, spec.lookahead, dt, settings.rotation, settings.parallel);
+  std::vector<CollisionBody<D>> views =
+      stageViews<D>(world, spec.lookahead, dt, settings.rotation, settings.parallel, settings.impulsePoint.arms,
+                    settings.impulsePoint.heldSamples);
   // The residual test (chapter 8, "Ending the loops"): with a tolerance, a sweep whose
   // fastest approach was at most stageApproachTolerance ends the stage too.
   StageSpec measured = spec;
@@ -547,7 +581,7 @@ void runImpulseStage(World<D>& world, const StageSpec& spec, double dt,
                                      const StageSpec&, int, double, const StepSettings&,        \
                                      StageCounters&, PairCandidateLists<D>*);                    \
   extern template std::vector<CollisionBody<D>> stageViews<D>(const World<D>&, Lookahead, double, \
-                                                              RotationUpdate, const ParallelSettings&); \
+                                                              RotationUpdate, const ParallelSettings&, LeverArms, bool); \
   extern template int sweepPairs<D>(World<D>&, std::vector<CollisionBody<D>>&,                  \
                                     const std::vector<BodyPair>&, const StageSpec&, int, double, \
                                     const StepSettings&, StageCounters&,                        \

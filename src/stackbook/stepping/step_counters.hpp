@@ -32,6 +32,7 @@ struct StageCounters {
   std::int64_t rollingImpulses = 0;       ///< rolling/spinning friction impulses applied
   std::int64_t stepConeSticks = 0;        ///< of the sticking ones: admitted by the step's cone only
   std::int64_t patchImpulses = 0;         ///< of the sticking ones: whole patches (chapter 8, Eq. (8.16))
+  std::int64_t tiedLandings = 0;          ///< impulses at the centre of tied samples (Eq. (12.7))
   std::int64_t uncarried = 0;  ///< shock pass: bodies that did not carry their load (chapter 12, Eq. (12.4))
   /// Threads (chapter 10): sweeps that ran as islands on several threads, the islands of
   /// those sweeps, and the pairs of the largest island of each (its share of the sweep's
@@ -65,6 +66,7 @@ struct StageCounters {
     elasticImpulses += o.elasticImpulses;
     rollingImpulses += o.rollingImpulses;
     patchImpulses += o.patchImpulses;
+    tiedLandings += o.tiedLandings;
     uncarried += o.uncarried;
     stepConeSticks += o.stepConeSticks;
     islandSweeps += o.islandSweeps;
