@@ -112,7 +112,7 @@ int main() {
   const Rules tested{"Lever arms at the tested pose, every sample may collide", LeverArms::AtTestedPose, false, false};
   const Rules start{"Lever arms at the start pose, every sample may collide", LeverArms::AtStartPose, false, false};
   const Rules held{"Start pose, held samples passed over", LeverArms::AtStartPose, true, false};
-  const Rules all{"The defaults: start pose, held samples, tied landing", LeverArms::AtStartPose, true, true};
+  const Rules all{"The default step's rules: start pose, held samples, tied landing", LeverArms::AtStartPose, true, true};
   std::printf("A block with b = %g m, h = %g m (b/h = 1/3), released from rest at 10 degrees on its corner, "
               "e = 0, mu = 1, GBF's step without shock propagation. Housner's ratio is %.4f.\n\n",
               kB, kH, testing::housnerRatio(kB, kH));

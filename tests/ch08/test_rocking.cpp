@@ -58,18 +58,31 @@ void checkHousnerGrid(StepSettings settings) {
 TEST_SUITE(STACKBOOK_CHAPTER) {
 
 // [rocking_test]
-TEST_CASE_TEMPLATE("A rocking block keeps Housner's ratio r = 1 - 3/2 sin^2(alpha) across its first landing "
+// GBF's step with the landing rules of the default step (withLandingRules()): lever arms at the
+// start pose (Eq. (8.22)), held samples and tied landing (chapter 12).
+TEST_CASE_TEMPLATE("With the landing rules a rocking block keeps Housner's ratio r = 1 - 3/2 sin^2(alpha) across its first landing "
                    "within 1 % for b/h = 1/2 and 1/3 and 1/5 released at 5 and 10 degrees at every dt from 1e-3 "
                    "to 2.5e-4 and no step of the landing raises its energy",
                    Dim, In2D, In3D) {
-  checkHousnerGrid<Dim::value>(StepSettings{});
+  checkHousnerGrid<Dim::value>(withLandingRules(StepSettings{}));
 }
 // [rocking_test]
+
+TEST_CASE("StepSettings{} keeps the paper's pair rule and withLandingRules() turns the three rules on") {
+  const ImpulsePointSettings paper;
+  CHECK(paper.arms == LeverArms::AtTestedPose);
+  CHECK_FALSE(paper.heldSamples);
+  CHECK_FALSE(paper.tiedLanding);
+  const ImpulsePointSettings rules = withLandingRules(paper);
+  CHECK(rules.arms == LeverArms::AtStartPose);
+  CHECK(rules.heldSamples);
+  CHECK(rules.tiedLanding);
+}
 
 TEST_CASE("The landing is one impulse at the landing corner and the old pivot leaves the floor in the same step") {
   RockingBlock<2> scene = makeRockingBlock<2>(0.1, 0.3, degrees(10.0));
   ContactRecorder recorder;
-  StepSettings settings;
+  StepSettings settings = withLandingRules(StepSettings{});
   settings.dt = 5e-4;
   settings.contactRecorder = &recorder;
   int landingImpulses = 0, elsewhere = 0;
@@ -122,7 +135,7 @@ TEST_CASE("Eq. (8.21): with lever arms at the tested pose the pivot sinks by the
 
 TEST_CASE("Without held samples the sample next to the pivot takes the landing at some time step and the ratio "
           "misses by more than 5 %") {
-  StepSettings settings;
+  StepSettings settings = withLandingRules(StepSettings{});
   settings.impulsePoint.heldSamples = false;
   double worst = 0.0;
   for (const double dt : kTimeSteps) {
@@ -136,7 +149,7 @@ TEST_CASE("Without held samples the sample next to the pivot takes the landing a
 
 TEST_CASE("Without the tied landing a 3D block lands on one end of its edge and twists and its ratio is more "
           "than 1.5 % high") {
-  StepSettings settings;
+  StepSettings settings = withLandingRules(StepSettings{});
   settings.impulsePoint.tiedLanding = false;
   settings.dt = 1e-3;
   const Landing landing = rockOnce<3>(0.2, 10.0, settings);

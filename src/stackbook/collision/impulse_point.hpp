@@ -37,20 +37,20 @@ struct ImpulsePointSettings {
   /// owner) has n_i . n >= normalCosine (in (0, 1]; 0.99 is 8.1 degrees). Faces of a
   /// nonconvex body that meet at a sharper angle get their own impulses.
   double normalCosine = 0.99;
-  /// Where the approach test and the impulse measure lever arms and the normal (chapter 12,
-  /// "Where the lever arms are measured", Eq. (8.22)): at the pose the step started from
-  /// (the default, PhysBAM's), or at the tested pose where the sample was found.
-  LeverArms arms = LeverArms::AtStartPose;
-  /// The collision stage passes over held samples (chapter 12, "Landing on a support",
-  /// Eq. (12.6)): an approaching sample that interferes only because of the step's loads,
-  /// while a sample of the pair at least as deep rests on it, is left to the contact stage.
-  /// false: every approaching sample can collide (the rule of Eq. (7.6) alone).
-  bool heldSamples = true;
-  /// The collision stage lands tied samples together (chapter 12, "Landing on a support",
-  /// Eq. (12.7)): the approaching samples whose depth is within tieTolerance |phi| of the
-  /// chosen one's, with its normal, share one impulse at their centre. false: ties are
-  /// taken one after the other, in the order round-off gives them (GBF's rule alone).
-  bool tiedLanding = true;
+  /// Where the approach test and the impulse measure lever arms and the normal (chapter 8,
+  /// "A rocking block", Eq. (8.22)): at the tested pose where the sample was found (Eq. (8.3),
+  /// the default), or at the pose the step started from (PhysBAM's; the default step's).
+  LeverArms arms = LeverArms::AtTestedPose;
+  /// Held samples (chapter 12, "Landing on a support", Eq. (12.6)): the collision stage passes
+  /// over an approaching sample that interferes only because of the step's loads while a sample
+  /// of the pair at least as deep rests, and leaves it to the contact stage. false (the
+  /// default): every approaching sample can collide (the rule of Eq. (7.6) alone).
+  bool heldSamples = false;
+  /// Tied landing (chapter 12, "Landing on a support", Eq. (12.7)): the approaching samples
+  /// whose depth is within tieTolerance |phi| of the chosen one's, with its normal, share one
+  /// impulse at their centre. false (the default): ties are taken one after the other, in the
+  /// order round-off gives them (GBF's rule alone).
+  bool tiedLanding = false;
   /// The relative depth within which samples tie (>= 0; 1e-6: equal but for round-off).
   double tieTolerance = 1e-6;
 };
@@ -68,6 +68,19 @@ inline void validateImpulsePointSettings(const ImpulsePointSettings& s, const ch
   }
   throw std::invalid_argument(msg.str());
 }
+
+// [landing_rules]
+/// The landing rules on (chapter 8, "A rocking block"; chapter 12, "Landing on a support"):
+/// lever arms at the start pose (Eq. (8.22)), held samples (Eq. (12.6)) and tied landing
+/// (Eq. (12.7)). The default step (the preset "carryingPass") turns them on; StepSettings{}
+/// keeps the paper's pair rule.
+inline ImpulsePointSettings withLandingRules(ImpulsePointSettings s) {
+  s.arms = LeverArms::AtStartPose;
+  s.heldSamples = true;
+  s.tiedLanding = true;
+  return s;
+}
+// [landing_rules]
 
 // [tied_landing_point]
 /// The tied landing of Eq. (12.7) over a list of samples: the centre of the approaching

@@ -614,13 +614,15 @@ inline StepSettings passAsContactStagePatch(StepSettings base = {}, double level
 /// names none: the pass as the contact stage with sticking patches (passAsContactStagePatch())
 /// that freezes only the bodies that carry their load (FreezeRule::WhenItCarries), with chapter
 /// 11's accurate knobs where they are cheap: the implicit midpoint rotation rule and exact
-/// deepest points for round shapes (SurfaceQuery::RoundShapes; boxes and meshes keep samples).
+/// deepest points for round shapes (SurfaceQuery::RoundShapes; boxes and meshes keep samples),
+/// and the landing rules (withLandingRules(): lever arms at the start pose, held samples, tied
+/// landing; chapters 8 and 12).
 inline StepSettings carryingPass(StepSettings base = {}) {
   base = passAsContactStagePatch(base);
   base.shock.freeze = FreezeRule::WhenItCarries;
   base.rotation = RotationUpdate::ImplicitMidpoint;
   base.detection.narrow.surfaceQuery = SurfaceQuery::RoundShapes;
-  return base;
+  return withLandingRules(base);
 }
 // [carrying_pass_settings]
 

@@ -40,7 +40,7 @@ inline constexpr std::array<std::pair<SolverPreset, std::string_view>, 7> kSolve
 
 /// `base` with every field a preset sets put back to GBF's, StepSettings{}'s: the pair caps
 /// and loop tolerances of the three loops, whether the pass replaces the contact stage, its
-/// sweeps, ramp and level tolerance, the welded pass, the freeze rule, the cone rule, the impulse point rule, the rotation rule and the surface query. Every preset starts from this, so a preset means the
+/// sweeps, ramp and level tolerance, the welded pass, the freeze rule, the cone rule, the impulse point rule and its landing rules, the rotation rule and the surface query. Every preset starts from this, so a preset means the
 /// same settings whatever `base` came from (a scene that names one preset, timed under another).
 inline StepSettings withGbfLoops(StepSettings base) {
   const StepSettings gbf;
@@ -60,6 +60,9 @@ inline StepSettings withGbfLoops(StepSettings base) {
   base.detection.narrow.surfaceQuery = gbf.detection.narrow.surfaceQuery;
   base.shock.carryTolerance = gbf.shock.carryTolerance;
   base.impulsePoint.rule = gbf.impulsePoint.rule;
+  base.impulsePoint.arms = gbf.impulsePoint.arms;
+  base.impulsePoint.heldSamples = gbf.impulsePoint.heldSamples;
+  base.impulsePoint.tiedLanding = gbf.impulsePoint.tiedLanding;
   return base;
 }
 

@@ -216,6 +216,13 @@ struct StepSettings {
 };
 // [step_settings]
 
+/// `s` with the landing rules on (withLandingRules() of its impulse point): the default step's
+/// (chapter 12, "Landing on a support").
+inline StepSettings withLandingRules(StepSettings s) {
+  s.impulsePoint = withLandingRules(s.impulsePoint);
+  return s;
+}
+
 /// Throws std::invalid_argument naming the field unless the settings are in range.
 inline void validateStepSettings(const StepSettings& s, const char* caller = "validateStepSettings") {
   std::ostringstream msg;
